@@ -1,0 +1,109 @@
+"""Shared test helpers.
+
+* ``require_program("dot")`` skips a test when a system program is missing,
+  and fails it instead when ``WORKBENCH_REQUIRE_ALL=1`` (as ``.ci/run`` sets).
+* ``shared_datasets`` is ``../shared/datasets`` beside the checkout, skipping
+  when absent (a user's checkout has none).
+* ``run_notebook(name)`` executes ``notebooks/<name>`` in a real kernel with
+  ``WORKBENCH_NOTEBOOK_MODE=short``.
+* ``run_cli(*args)`` runs ``python -m workbench`` in a subprocess.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from workbench.optional import find_program
+
+REPO_ROOT = Path(__file__).resolve().parent.parent
+DATA_DIR = Path(__file__).resolve().parent / "data"
+
+
+def require_all() -> bool:
+    return os.environ.get("WORKBENCH_REQUIRE_ALL", "") not in ("", "0")
+
+
+def skip_or_fail(reason: str) -> None:
+    """Skip with ``reason``; under WORKBENCH_REQUIRE_ALL=1, fail instead."""
+    if require_all():
+        pytest.fail(f"WORKBENCH_REQUIRE_ALL=1 forbids skipping: {reason}")
+    pytest.skip(reason)
+
+
+@pytest.fixture
+def require_program():
+    def _require(name: str) -> str:
+        path = find_program(name)
+        if path is None:
+            skip_or_fail(f"system program '{name}' is not installed")
+        return path
+
+    return _require
+
+
+@pytest.fixture(scope="session")
+def shared_datasets() -> Path:
+    path = REPO_ROOT.parent / "shared" / "datasets"
+    if not path.is_dir():
+        skip_or_fail(f"{path} is absent (it ships beside the development checkout only)")
+    return path
+
+
+@pytest.fixture(scope="session")
+def repo_root() -> Path:
+    return REPO_ROOT
+
+
+@pytest.fixture(scope="session")
+def data_dir() -> Path:
+    return DATA_DIR
+
+
+@pytest.fixture
+def run_cli():
+    """Run ``python -m workbench ARGS`` and return the CompletedProcess (text mode)."""
+
+    def _run(*args: str, cwd: Path | None = None, timeout: float = 300, env=None, input=None):
+        full_env = dict(os.environ)
+        full_env.pop("WORKBENCH_DEBUG", None)
+        if env:
+            full_env.update(env)
+        return subprocess.run(
+            [sys.executable, "-m", "workbench", *map(str, args)],
+            cwd=cwd,
+            capture_output=True,
+            text=True,
+            timeout=timeout,
+            env=full_env,
+            input=input,
+        )
+
+    return _run
+
+
+@pytest.fixture
+def run_notebook(tmp_path, monkeypatch):
+    """Execute a notebook from ``notebooks/`` in short mode; returns the executed notebook."""
+
+    def _run(name: str, timeout: float = 600):
+        import nbformat
+        from nbclient import NotebookClient
+
+        path = REPO_ROOT / "notebooks" / name
+        notebook = nbformat.read(path, as_version=4)
+        monkeypatch.setenv("WORKBENCH_NOTEBOOK_MODE", "short")
+        client = NotebookClient(
+            notebook,
+            timeout=timeout,
+            kernel_name="python3",
+            resources={"metadata": {"path": str(tmp_path)}},
+        )
+        client.execute()
+        return notebook
+
+    return _run

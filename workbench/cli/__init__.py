@@ -1,0 +1,113 @@
+"""The ``workbench`` command line.
+
+The top level knows only the command names and one-line helps, so
+``workbench --help`` starts instantly. A command lives in its own module
+``workbench.cli.<name>`` that defines::
+
+    def configure(parser: argparse.ArgumentParser) -> None: ...
+    def run(args: argparse.Namespace) -> int: ...
+
+and imports anything heavy (pydrake, ompl, zenoh) inside ``run``. Errors
+derived from :class:`~workbench.errors.WorkbenchError` are printed as one
+line on stderr with a non-zero exit status; ``WORKBENCH_DEBUG=1`` shows the
+traceback instead.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import importlib.util
+import os
+import sys
+from collections.abc import Sequence
+
+from workbench import __version__
+from workbench.errors import WorkbenchError
+
+#: command name -> one-line help, in the order ``--help`` lists them.
+COMMANDS: dict[str, str] = {
+    # models (Experiments 5, 7.2, 8)
+    "check": "check a URDF/SDF/xacro robot description (check_urdf, and more)",
+    "graph": "draw a robot's links and joints with graphviz (urdf_to_graphviz)",
+    "show": "show a robot in the browser with joint sliders (urdf_tutorial display.launch)",
+    # bus (Experiments 1, 2)
+    "core": "run the parameter server and registry for several processes (roscore)",
+    "launch": "start the nodes of a launch file (roslaunch)",
+    "run": "run a registered workbench node (rosrun)",
+    "node": "list, inspect, ping and kill nodes; draw the graph (rosnode, rqt_graph)",
+    "topic": "list, echo, publish, measure and plot topics (rostopic, rqt_plot)",
+    "service": "list, call and inspect services (rosservice)",
+    "param": "get, set, dump and load parameters (rosparam)",
+    "msg": "show message definitions and md5sums (rosmsg)",
+    "srv": "show service definitions (rossrv)",
+    "bag": "record, inspect and play ROS 1 bag files (rosbag)",
+    "turtlesim": "run the turtlesim simulator (turtlesim_node)",
+    "teleop": "drive a turtle or a robot from the keyboard",
+    # frames (Experiment 4)
+    "tf": "echo transforms and draw the frame tree (tf_echo, view_frames)",
+    # planning (Experiments 9, 10)
+    "setup": "write a planning configuration for a robot (MoveIt setup assistant)",
+    "plan": "plan, time and execute a motion for a robot arm (MoveIt)",
+    # mapping (Experiment 10)
+    "slam": "build a 2D occupancy map from a laser log (gmapping)",
+    "map": "show and convert saved maps (map_server)",
+}
+
+
+def _module_name(command: str) -> str:
+    return f"workbench.cli.{command}"
+
+
+def available_commands() -> dict[str, str]:
+    """The commands whose modules exist in this installation."""
+    return {
+        name: text
+        for name, text in COMMANDS.items()
+        if importlib.util.find_spec(_module_name(name)) is not None
+    }
+
+
+def _top_parser(commands: dict[str, str]) -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="workbench",
+        description="A ROS-free robotics lab workbench. "
+        "Run 'workbench COMMAND --help' for a command's options.",
+    )
+    parser.add_argument("--version", action="version", version=f"workbench {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for name, text in commands.items():
+        sub.add_parser(name, help=text, add_help=False)
+    return parser
+
+
+def _report(command: str, error: WorkbenchError) -> int:
+    print(f"workbench {command}: error: {error.one_line()}", file=sys.stderr)
+    return error.exit_code
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line; returns the process exit status."""
+    args = list(sys.argv[1:] if argv is None else argv)
+    commands = available_commands()
+    if not args or args[0] not in commands:
+        # --help, --version, no command, or an unknown one: argparse says it.
+        _top_parser(commands).parse_args(args or ["--help"])
+        return 2
+    command = args[0]
+    module = importlib.import_module(_module_name(command))
+    parser = argparse.ArgumentParser(prog=f"workbench {command}", description=COMMANDS[command])
+    module.configure(parser)
+    options = parser.parse_args(args[1:])
+    try:
+        return int(module.run(options) or 0)
+    except WorkbenchError as error:
+        if os.environ.get("WORKBENCH_DEBUG"):
+            raise
+        return _report(command, error)
+    except KeyboardInterrupt:
+        return 130
+    except BrokenPipeError:
+        # `workbench topic echo ... | head` closes stdout early: not an error.
+        sys.stderr.close()
+        return 0
