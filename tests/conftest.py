@@ -23,6 +23,10 @@ from workbench.optional import find_program
 REPO_ROOT = Path(__file__).resolve().parent.parent
 DATA_DIR = Path(__file__).resolve().parent / "data"
 
+# Tests never join a core the developer happens to be running on the default
+# port; multiprocess tests start their own on a free port and set the URI.
+os.environ.setdefault("WORKBENCH_MASTER_URI", "inproc")
+
 
 def require_all() -> bool:
     return os.environ.get("WORKBENCH_REQUIRE_ALL", "") not in ("", "0")

@@ -1,0 +1,40 @@
+#!/usr/bin/env python3
+# Experiment 4, 5 "Wait For Transform function": turtle2 goes where turtle1 was
+# 5 seconds ago (the manual's version, which asks where turtle1 was relative to
+# where turtle2 was 5 s ago, so turtle2 drives around uncontrollably).
+# Only the imports differ from the manual.
+import math
+
+from workbench.compat import rospy
+from workbench.compat import tf
+from workbench.msgs import geometry_msgs
+from workbench.msgs import turtlesim
+
+if __name__ == "__main__":
+    rospy.init_node("turtle_tf_listener")
+
+    listener = tf.TransformListener()
+
+    rospy.wait_for_service("spawn")
+    spawner = rospy.ServiceProxy("spawn", turtlesim.Spawn)
+    spawner(4, 2, 0, "turtle2")
+
+    turtle_vel = rospy.Publisher("turtle2/cmd_vel", geometry_msgs.Twist, queue_size=1)
+
+    rate = rospy.Rate(10.0)
+    while not rospy.is_shutdown():
+        try:
+            now = rospy.Time.now() - rospy.Duration(5.0)
+            listener.waitForTransform("/turtle2", "/turtle1", now, rospy.Duration(1.0))
+            (trans, rot) = listener.lookupTransform("/turtle2", "/turtle1", now)
+        except (tf.Exception, tf.LookupException, tf.ConnectivityException):
+            continue
+
+        angular = 4 * math.atan2(trans[1], trans[0])
+        linear = 0.5 * math.sqrt(trans[0] ** 2 + trans[1] ** 2)
+        cmd = geometry_msgs.Twist()
+        cmd.linear.x = linear
+        cmd.angular.z = angular
+        turtle_vel.publish(cmd)
+
+        rate.sleep()

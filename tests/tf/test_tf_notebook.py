@@ -1,0 +1,23 @@
+"""notebooks/04_tf.ipynb runs from start to end."""
+
+from __future__ import annotations
+
+import pytest
+
+
+@pytest.mark.notebook
+def test_tf_notebook_runs(run_notebook):
+    notebook = run_notebook("04_tf.ipynb")
+    text = "".join(
+        output.get("text", "")
+        for cell in notebook.cells
+        if cell.cell_type == "code"
+        for output in cell.get("outputs", [])
+    )
+    assert "- Translation: [" in text and "in RPY (degree)" in text
+    assert "turtle1: \n  parent: 'world'" in text
+    assert "radius 2.00" in text
+    assert "base_laser: (1.00, 0.20, 0.00) -----> base_link: (1.10, 0.20, 0.20)" in text
+    assert "Frame wrist_roll_link exists with parent elbow_pitch_link." in text
+    assert "links not placed: {}" in text and "frames not placed: {}" in text
+    assert "snapshot:" in text

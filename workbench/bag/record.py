@@ -1,0 +1,142 @@
+"""Recording bus topics into a bag (``rosbag record``).
+
+The recorder subscribes with a deep queue and writes every message it
+receives, stamped with its receive time on the node's clock. With
+``all_topics`` it keeps looking for new topics while it runs, as
+``rosbag record -a`` does.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import threading
+import time
+from collections.abc import Iterable
+from typing import Any
+
+from workbench.bag.writer import BagWriter
+
+QUEUE_SIZE = 0  # unbounded: the recorder must not drop messages
+
+
+class Recorder:
+    """Subscribe to topics on a bus node and write what arrives into a bag.
+
+    Args:
+        node: A ``workbench.bus.Node`` to subscribe with.
+        path: The bag to write (``NAME.bag``; ``NAME.bag.active`` while recording).
+        topics: Topic names to record.
+        all_topics: Record every published topic, including ones that appear later.
+        exclude: A regular expression of topics not to record (``-x``).
+        compression: ``none``, ``bz2`` or ``lz4``.
+    """
+
+    def __init__(
+        self,
+        node: Any,
+        path: str | os.PathLike[str],
+        *,
+        topics: Iterable[str] = (),
+        all_topics: bool = False,
+        exclude: str | None = None,
+        compression: str = "none",
+    ) -> None:
+        self.node = node
+        self.writer = BagWriter(path, compression=compression)
+        self.all_topics = all_topics
+        self.exclude = re.compile(exclude) if exclude else None
+        self._wanted = [node.resolve_name(t) for t in topics]
+        self._subscriptions: dict[str, Any] = {}
+        self.received = 0
+        self._lock = threading.Lock()
+        self.writer.open()
+
+    @property
+    def path(self):
+        return self.writer.path
+
+    @property
+    def counts(self) -> dict[str, int]:
+        return dict(self.writer.counts)
+
+    def poll_topics(self) -> list[str]:
+        """Subscribe to wanted topics that now have a publisher; returns the new ones."""
+        from workbench.msgs import get_type
+
+        published = _published_topics(self.node)
+        names = published if self.all_topics else [t for t in self._wanted if t in published]
+        new = []
+        for topic in names:
+            if topic in self._subscriptions or (self.exclude and self.exclude.search(topic)):
+                continue
+            typename = published[topic]
+            cls = get_type(typename)
+            self._subscriptions[topic] = self.node.create_subscription(
+                topic, cls, self._callback, queue_size=QUEUE_SIZE, callback_args=topic
+            )
+            self.writer.add_connection(topic, typename, callerid=self.node.name)
+            new.append(topic)
+        return new
+
+    def _callback(self, msg: Any, topic: str) -> None:
+        stamp = self.node.now()
+        with self._lock:  # callbacks of different topics may run on different threads
+            self.writer.write(topic, msg, stamp)
+            self.received += 1
+
+    def flush(self, timeout: float = 10.0) -> bool:
+        """Wait until every message the subscriptions received has been written.
+
+        Returns:
+            Whether everything was written within ``timeout`` seconds.
+        """
+        bus = self.node.bus
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            arrived = sum(getattr(sub, "received", 0) for sub in self._subscriptions.values())
+            if self.received >= arrived:
+                return True
+            if getattr(bus, "threaded", True):
+                time.sleep(0.002)
+            else:
+                bus.spin_once(0.0)
+        return False
+
+    def close(self):
+        """Write what is still queued, stop subscribing and finish the bag; returns its path."""
+        self.flush()
+        for sub in self._subscriptions.values():
+            for name in ("unregister", "shutdown", "destroy"):
+                stop = getattr(sub, name, None)
+                if callable(stop):
+                    stop()
+                    break
+        self._subscriptions.clear()
+        with self._lock:
+            return self.writer.close()
+
+
+def _published_topics(node: Any) -> dict[str, str]:
+    """Topic -> type of every topic with at least one publisher (other than ours)."""
+    graph = node.bus.graph() if hasattr(node, "bus") else node.graph()
+    topics = getattr(graph, "topics", graph.get("topics") if isinstance(graph, dict) else None)
+    out: dict[str, str] = {}
+    for info in _iter_topics(topics):
+        name, typename, publishers = info
+        if publishers:
+            out[name] = typename
+    return out
+
+
+def _iter_topics(topics: Any):
+    if isinstance(topics, dict):
+        for name, info in topics.items():
+            yield name, _attr(info, "type"), _attr(info, "publishers")
+    else:
+        for info in topics or ():
+            yield _attr(info, "name"), _attr(info, "type"), _attr(info, "publishers")
+
+
+def _attr(info: Any, name: str) -> Any:
+    return info.get(name) if isinstance(info, dict) else getattr(info, name)

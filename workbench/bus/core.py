@@ -1,0 +1,130 @@
+"""``workbench core``: the router, parameter server and registry of a multi-process graph.
+
+It plays roscore's part. Nodes in other processes connect to it at
+``WORKBENCH_MASTER_URI`` (default ``tcp/127.0.0.1:11311``); it routes their
+Zenoh traffic, answers parameter requests and hosts the liveliness tokens
+that make up the graph (so a node that dies disappears from it).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import threading
+from typing import Any
+
+from workbench.bus.errors import CoreError
+from workbench.bus.params import ParameterError, ParameterServer
+from workbench.bus.zconfig import parse_uri, port_open, router_config, zenoh_module
+from workbench.errors import WorkbenchError
+
+_LOOPBACK = {"127.0.0.1", "localhost", "::1"}
+
+
+class Core:
+    """A running core (close it with :meth:`close`, or use it as a context manager).
+
+    Args:
+        uri: Where to listen (``tcp/127.0.0.1:11311``).
+        allow_remote: Allow a non-loopback address (other machines can then connect).
+        params: Initial parameters (a dict set at ``/``).
+
+    Raises:
+        CoreError: The address is malformed, not loopback without ``allow_remote``, or in use.
+    """
+
+    def __init__(
+        self, uri: str, allow_remote: bool = False, params: dict[str, Any] | None = None
+    ) -> None:
+        zenoh = zenoh_module()
+        proto, host, port = parse_uri(uri)
+        if host not in _LOOPBACK and not allow_remote:
+            raise CoreError(
+                f"refusing to listen on {host}: the core binds to loopback unless told otherwise",
+                hint="pass --allow-remote to accept other machines",
+            )
+        if proto == "tcp" and port_open(host, port, timeout=0.3):
+            raise CoreError(
+                f"port {port} on {host} is already in use (another core?)",
+                hint="stop it, or pick another port with WORKBENCH_MASTER_URI=tcp/127.0.0.1:PORT",
+            )
+        try:
+            self.session = zenoh.open(router_config(uri))
+        except zenoh.ZError as error:
+            text = str(error)
+            if "in use" in text:
+                raise CoreError(
+                    f"port {port} on {host} is already in use (another core?)",
+                    hint="stop it, or pick another port with WORKBENCH_MASTER_URI",
+                ) from None
+            raise CoreError(f"cannot start a core at {uri}: {text.split(' at /')[0]}") from None
+        self.uri = uri
+        self.params = ParameterServer()
+        if params:
+            for key, value in params.items():
+                self.params.set("/" + key.lstrip("/"), value)
+        self._queryable = self.session.declare_queryable(
+            "wb/p/*", zenoh.handlers.Callback(self._on_param, indirect=False)
+        )
+        self._token = self.session.liveliness().declare_token("wb/core")
+        self._closed = threading.Event()
+
+    def _on_param(self, query: Any) -> None:
+        op = str(query.key_expr).rsplit("/", 1)[-1]
+        try:
+            args = json.loads(query.payload.to_string()) if query.payload is not None else {}
+            params = self.params
+            if op == "get":
+                result: Any = params.get(args["name"])
+            elif op == "set":
+                params.set(args["name"], args["value"])
+                result = True
+            elif op == "has":
+                result = params.has(args["name"])
+            elif op == "delete":
+                params.delete(args["name"])
+                result = True
+            elif op == "names":
+                result = params.names()
+            elif op == "search":
+                result = params.search(args["namespace"], args["key"])
+            else:
+                raise ParameterError(f"unknown parameter operation '{op}'")
+            query.reply(query.key_expr, json.dumps(result))
+        except ParameterError as error:
+            query.reply_err(json.dumps({"kind": "missing", "message": error.one_line()}))
+        except (WorkbenchError, KeyError, ValueError, TypeError) as error:
+            query.reply_err(json.dumps({"kind": "bad", "message": str(error)}))
+
+    def nodes(self) -> list[str]:
+        """Names of the nodes currently alive on this core."""
+        from workbench.bus.keys import parse_token
+
+        names = []
+        for reply in self.session.liveliness().get("wb/g/**", timeout=1.0):
+            if reply.ok is not None:
+                token = parse_token(str(reply.ok.key_expr))
+                if token is not None and token.kind == "n":
+                    names.append(token.node)
+        return sorted(set(names))
+
+    def wait(self) -> None:
+        """Block until :meth:`close` (Ctrl-C raises KeyboardInterrupt here)."""
+        while not self._closed.wait(0.2):
+            pass
+
+    def close(self) -> None:
+        if self._closed.is_set():
+            return
+        self._closed.set()
+        for item in (self._queryable, self._token):
+            with contextlib.suppress(Exception):
+                item.undeclare()
+        with contextlib.suppress(Exception):
+            self.session.close()
+
+    def __enter__(self) -> Core:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()

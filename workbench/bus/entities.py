@@ -1,0 +1,488 @@
+"""Publishers, subscriptions, services, clients, timers and rates.
+
+Create them through a :class:`~workbench.bus.node.Node`
+(``node.create_publisher(...)`` ...), not directly.
+"""
+
+from __future__ import annotations
+
+import contextvars
+import threading
+import traceback
+from collections import deque
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from workbench.bus.errors import ServiceError, ServiceTimeout, ShutdownError, TopicTypeError
+from workbench.errors import MessageError
+from workbench.msgs import Message, is_service, md5sum
+
+if TYPE_CHECKING:
+    from collections.abc import Callable
+
+    from workbench.bus.node import Node
+
+
+class AnyMsg:
+    """Subscribe with ``AnyMsg`` to receive whatever type is published on a topic.
+
+    The callback gets the publisher's message object (decoded from its own type
+    when it comes from another process; raw bytes if that type is unknown here).
+    """
+
+    _type = "*"
+    _md5sum = "*"
+
+
+#: The node whose callback is running in this thread (for rospy's get_caller_id).
+current_node: contextvars.ContextVar[Node | None] = contextvars.ContextVar(
+    "workbench_current_node", default=None
+)
+
+
+def type_and_md5(data_class: Any) -> tuple[str, str]:
+    if data_class is AnyMsg:
+        return "*", "*"
+    return data_class._type, md5sum(data_class._type)
+
+
+class Publisher:
+    """Publishes messages of one type on one topic (``node.create_publisher``)."""
+
+    def __init__(
+        self, node: Node, topic: str, data_class: type[Message], queue_size: int | None, latch: bool
+    ):
+        self.node = node
+        self.topic = topic
+        self.data_class = data_class
+        self.type, self.md5 = type_and_md5(data_class)
+        self.queue_size = queue_size
+        self.latch = latch
+        self.last_message: Message | None = None
+        self.closed = False
+        self._remote_put: Callable[[Message], None] | None = None
+        self._has_header = bool(getattr(data_class, "_has_header", False))
+        self._seq = 0
+
+    def publish(self, *args: Any, **kwargs: Any) -> None:
+        """Publish a message, or build one from the arguments (``pub.publish("hello")``).
+
+        Raises:
+            MessageError: A message of another type, or arguments that do not build one.
+            ShutdownError: The publisher or its node was shut down.
+        """
+        if len(args) == 1 and not kwargs and type(args[0]) is self.data_class:
+            msg = args[0]
+        else:
+            msg = self._coerce(args, kwargs)
+        if self.closed:
+            raise ShutdownError(f"publisher on {self.topic} is closed (its node shut down)")
+        if self._has_header:  # rospy numbers the messages of a publisher
+            self._seq += 1
+            msg.header.seq = self._seq & 0xFFFFFFFF
+        if self.latch:
+            self.last_message = msg
+        bus = self.node.bus
+        for sub in bus._subscribers_of(self.topic):
+            if sub.md5 == self.md5 or sub.md5 == "*":
+                sub._enqueue(msg)
+        put = self._remote_put
+        if put is not None:
+            put(msg)
+
+    def _coerce(self, args: tuple, kwargs: dict) -> Message:
+        if len(args) == 1 and not kwargs and isinstance(args[0], Message):
+            got = args[0]
+            if isinstance(got, self.data_class):
+                return got
+            raise TopicTypeError(
+                f"publisher on {self.topic} is {self.type}; cannot publish a {got._type}",
+                hint=f"create a publisher of {got._type}, or build a {self.type}",
+            )
+        if args and isinstance(args[-1], Message) and not isinstance(args[-1], self.data_class):
+            raise TopicTypeError(
+                f"publisher on {self.topic} is {self.type}; cannot publish a {args[-1]._type}"
+            )
+        try:
+            return self.data_class(*args, **kwargs)
+        except MessageError as error:
+            raise MessageError(
+                f"cannot publish on {self.topic}: {error.message}", hint=error.hint
+            ) from None
+
+    def get_num_connections(self) -> int:
+        """Number of subscribers on this topic (all processes)."""
+        return len(self.node.bus.graph().topics.get(self.topic, _EMPTY).subscribers)
+
+    def unregister(self) -> None:
+        """Stop publishing (``rospy.Publisher.unregister``)."""
+        if not self.closed:
+            self.closed = True
+            self.node.bus._remove_publisher(self)
+
+    shutdown = unregister
+
+
+class _Empty:
+    subscribers: list = []
+    publishers: list = []
+
+
+_EMPTY = _Empty()
+
+
+class Subscription:
+    """Delivers the messages of a topic to a callback through the bus's executor.
+
+    The queue holds at most ``queue_size`` messages; when full, the oldest is dropped.
+    """
+
+    def __init__(
+        self,
+        node: Node,
+        topic: str,
+        data_class: Any,
+        callback: Callable[..., Any] | None,
+        queue_size: int | None,
+        callback_args: Any = None,
+        direct: bool = False,
+    ):
+        self.node = node
+        self.topic = topic
+        self.data_class = data_class
+        self.type, self.md5 = type_and_md5(data_class)
+        self.callback = callback
+        self.callback_args = callback_args
+        size = queue_size if queue_size and queue_size > 0 else None
+        self._queue: deque[Any] = deque(maxlen=size)
+        self._scheduled = False
+        self._direct = direct
+        self.closed = False
+        self.received = 0
+
+    def _enqueue(self, msg: Any) -> None:
+        if self.closed:
+            return
+        self.received += 1
+        if self._direct:
+            self._call(msg)
+            return
+        self._queue.append(msg)
+        self.node.bus._schedule(self)
+
+    def _execute(self, budget: int = 8) -> int:
+        """Run up to ``budget`` queued callbacks; returns how many ran."""
+        ran = 0
+        queue = self._queue
+        while ran < budget:
+            try:
+                msg = queue.popleft()
+            except IndexError:
+                break
+            self._call(msg)
+            ran += 1
+        return ran
+
+    def _pending(self) -> bool:
+        return bool(self._queue)
+
+    def _call(self, msg: Any) -> None:
+        if self.callback is None or self.closed:
+            return
+        token = current_node.set(self.node)
+        try:
+            if self.callback_args is None:
+                self.callback(msg)
+            else:
+                self.callback(msg, self.callback_args)
+        except Exception as error:  # a user's callback must not kill the executor
+            self.node.get_logger().error(
+                f"bad callback: {getattr(self.callback, '__name__', self.callback)} on "
+                f"{self.topic}: {type(error).__name__}: {error}\n{traceback.format_exc().rstrip()}"
+            )
+        finally:
+            current_node.reset(token)
+
+    def get_num_connections(self) -> int:
+        return len(self.node.bus.graph().topics.get(self.topic, _EMPTY).publishers)
+
+    def unregister(self) -> None:
+        """Stop receiving (``rospy.Subscriber.unregister``)."""
+        if not self.closed:
+            self.closed = True
+            self._queue.clear()
+            self.node.bus._remove_subscription(self)
+
+    shutdown = unregister
+
+
+class ServiceServer:
+    """Answers calls of one service with ``handler(request) -> response``."""
+
+    def __init__(self, node: Node, name: str, service_class: Any, handler: Callable[[Any], Any]):
+        if not is_service(service_class):
+            raise MessageError(
+                f"{getattr(service_class, '_type', service_class)} is not a service type",
+                hint="pass a service class such as workbench.msgs.std_srvs.Trigger",
+            )
+        self.node = node
+        self.name = name
+        self.service_class = service_class
+        self.type = service_class._type
+        self.md5 = service_class._md5sum
+        self.handler = handler
+        self.closed = False
+
+    def handle(self, request: Any) -> Any:
+        """Run the handler; a failure becomes :class:`ServiceError` with the handler's message."""
+        token = current_node.set(self.node)
+        try:
+            result = self.handler(request)
+        except Exception as error:
+            self.node.get_logger().error(
+                f"Error processing request: {error}\n{traceback.format_exc().rstrip()}"
+            )
+            raise ServiceError(
+                f"service [{self.name}] responded with an error: error processing request: {error}"
+            ) from None
+        finally:
+            current_node.reset(token)
+        try:
+            return coerce_response(self.service_class.Response, result)
+        except MessageError as error:
+            self.node.get_logger().error(f"service [{self.name}] handler: {error.message}")
+            raise ServiceError(
+                f"service [{self.name}] responded with an error: {error.message}"
+            ) from None
+
+    def shutdown(self, reason: str = "") -> None:
+        if not self.closed:
+            self.closed = True
+            self.node.bus._remove_service(self)
+
+    unregister = shutdown
+
+
+def coerce_response(response_class: type[Message], result: Any) -> Message:
+    """Turn what a handler returned into a response, as rospy does."""
+    if isinstance(result, response_class):
+        return result
+    if result is None:
+        raise MessageError("service handler returned None")
+    if isinstance(result, Message):
+        raise MessageError(f"handler returned a {result._type}, not a {response_class._type}")
+    if isinstance(result, dict):
+        return response_class(**result)
+    if isinstance(result, (list, tuple)):
+        return response_class(*result)
+    return response_class(result)
+
+
+class Client:
+    """Calls one service (``node.create_client``)."""
+
+    def __init__(self, node: Node, name: str, service_class: Any):
+        if not is_service(service_class):
+            raise MessageError(
+                f"{getattr(service_class, '_type', service_class)} is not a service type"
+            )
+        self.node = node
+        self.name = name
+        self.service_class = service_class
+        self.type = service_class._type
+        self.md5 = service_class._md5sum
+
+    def wait_for_service(self, timeout: float | None = None) -> None:
+        """Block until someone offers the service.
+
+        Raises:
+            ServiceTimeout: ``timeout`` seconds (wall time) passed first.
+        """
+        if not self.node.bus._wait_for_service(self.name, timeout):
+            raise ServiceTimeout(
+                f"timeout exceeded while waiting for service {self.name}",
+                hint="is its server running? 'workbench service list' shows the offered services",
+            )
+
+    def service_is_ready(self) -> bool:
+        return self.node.bus._service_available(self.name)
+
+    def call(self, request: Any = None, timeout: float | None = None, **fields: Any) -> Any:
+        """Call the service and return its response.
+
+        Args:
+            request: A ``Request`` (or ``None`` to build one from ``fields``).
+            timeout: Seconds to wait for the response (None: no limit).
+
+        Raises:
+            ServiceError: Nobody offers the service, the types differ, or the handler raised.
+            ServiceTimeout: No response within ``timeout``.
+        """
+        request_class = self.service_class.Request
+        if request is None:
+            request = request_class(**fields)
+        elif not isinstance(request, request_class):
+            got = getattr(request, "_type", type(request).__name__)
+            raise MessageError(f"service {self.name} needs a {request_class._type}, not a {got}")
+        return self.node.bus._call_service(self, request, timeout)
+
+    __call__ = call
+
+    def close(self) -> None:
+        """Nothing to release (kept for rospy's ``ServiceProxy.close``)."""
+
+
+@dataclass
+class TimerEvent:
+    """What a timer callback receives (rospy's ``TimerEvent``), times as ``Time``."""
+
+    last_expected: Any
+    last_real: Any
+    current_expected: Any
+    current_real: Any
+    last_duration: float | None
+
+
+class Timer:
+    """Calls ``callback(event)`` every ``period`` seconds of the bus clock."""
+
+    def __init__(
+        self,
+        node: Node,
+        period: float,
+        callback: Callable[[TimerEvent], Any],
+        oneshot: bool = False,
+    ):
+        if not period > 0:
+            raise ValueError(f"timer period must be positive, not {period}")
+        self.node = node
+        self.period = float(period)
+        self.callback = callback
+        self.oneshot = oneshot
+        self.closed = False
+        self._scheduled = False
+        self._due = False
+        clock = node.bus.clock
+        self._next_ns = clock.now_ns() + int(self.period * 1e9)
+        self._last_expected: int | None = None
+        self._last_real: int | None = None
+        self._last_duration: float | None = None
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+        if node.bus.threaded:
+            self._thread = threading.Thread(
+                target=self._run, name=f"timer {node.name}", daemon=True
+            )
+            self._thread.start()
+
+    def _run(self) -> None:
+        clock = self.node.bus.clock
+        while not self._stop.is_set():
+            try:
+                clock.sleep_until_ns(self._next_ns, self._stop)
+            except Exception:
+                return
+            self._due = True
+            self.node.bus._schedule(self)
+            if self.oneshot:
+                return
+            self._next_ns += int(self.period * 1e9)
+            now = clock.now_ns()
+            if now > self._next_ns + int(self.period * 1e9):  # fell behind, or time jumped
+                self._next_ns = now + int(self.period * 1e9)
+
+    def _poll(self) -> bool:
+        """Stepped mode: mark the timer due if its time has come."""
+        if self.closed or self._due:
+            return self._due
+        now = self.node.bus.clock.now_ns()
+        if now >= self._next_ns:
+            self._due = True
+            self._next_ns = self._next_ns + int(self.period * 1e9)
+            if now > self._next_ns:
+                self._next_ns = now + int(self.period * 1e9)
+            return True
+        return False
+
+    def _pending(self) -> bool:
+        return self._due and not self.closed
+
+    def _execute(self, budget: int = 1) -> int:
+        if not self._due or self.closed:
+            return 0
+        self._due = False
+        from workbench.msgs import Time
+
+        clock = self.node.bus.clock
+        start = clock.now_ns()
+        expected = self._next_ns - int(self.period * 1e9)
+        event = TimerEvent(
+            None if self._last_expected is None else Time(0, self._last_expected),
+            None if self._last_real is None else Time(0, self._last_real),
+            Time(0, expected),
+            Time(0, start),
+            self._last_duration,
+        )
+        token = current_node.set(self.node)
+        try:
+            self.callback(event)
+        except Exception as error:
+            self.node.get_logger().error(
+                f"timer callback raised {type(error).__name__}: {error}\n"
+                f"{traceback.format_exc().rstrip()}"
+            )
+        finally:
+            current_node.reset(token)
+        self._last_expected, self._last_real = expected, start
+        self._last_duration = (clock.now_ns() - start) / 1e9
+        if self.oneshot:
+            self.shutdown()
+        return 1
+
+    def is_alive(self) -> bool:
+        return not self.closed
+
+    def shutdown(self) -> None:
+        if not self.closed:
+            self.closed = True
+            self._stop.set()
+            self.node.bus._remove_timer(self)
+
+    cancel = shutdown
+
+
+class Rate:
+    """Sleep so that a loop runs ``hz`` times per second of the bus clock."""
+
+    def __init__(self, hz: float, node: Node | None = None, bus: Any = None):
+        if not hz > 0:
+            raise ValueError(f"rate must be positive, not {hz}")
+        if bus is None:
+            if node is not None:
+                bus = node.bus
+            else:
+                from workbench.bus.bus import default_bus
+
+                bus = default_bus()
+        self._bus = bus
+        self._period_ns = int(1e9 / hz)
+        self._last_ns = bus.clock.now_ns()
+
+    def remaining(self) -> float:
+        """Seconds left until the next cycle should start."""
+        return (self._last_ns + self._period_ns - self._bus.clock.now_ns()) / 1e9
+
+    def sleep(self) -> None:
+        """Sleep until the next cycle.
+
+        Raises:
+            ShutdownInterrupt: The bus shut down while sleeping.
+        """
+        clock = self._bus.clock
+        now = clock.now_ns()
+        if now < self._last_ns:  # time went backwards (a simulation reset)
+            self._last_ns = now
+        deadline = self._last_ns + self._period_ns
+        clock.sleep_until_ns(deadline, self._bus._stop_event)
+        now = clock.now_ns()
+        self._last_ns = deadline if now - deadline <= self._period_ns else now

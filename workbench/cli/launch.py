@@ -1,0 +1,55 @@
+"""``workbench launch FILE [name:=value ...]``: start the nodes of a launch file (roslaunch)."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "target",
+        nargs="+",
+        help="a launch file (.launch/.xml or .yaml), or PACKAGE FILE; then arg:=value pairs",
+    )
+    parser.add_argument("--uri", help="the core's address (default $WORKBENCH_MASTER_URI)")
+    parser.add_argument("--dry-run", action="store_true", help="print the plan, start nothing")
+
+
+def _split(target: list[str]) -> tuple[Path, dict[str, str]]:
+    from workbench.bus.launch import LaunchError, find_package
+
+    words = [w for w in target if ":=" not in w]
+    values = dict(w.split(":=", 1) for w in target if ":=" in w)
+    if len(words) == 1:
+        return Path(words[0]), values
+    if len(words) == 2:
+        package = find_package(words[0])
+        for candidate in (package / "launch" / words[1], package / words[1]):
+            if candidate.is_file():
+                return candidate, values
+        raise LaunchError(f"no launch file {words[1]} in package {words[0]} ({package})")
+    raise LaunchError("give a launch file, or a package and a launch file name")
+
+
+def run(args: argparse.Namespace) -> int:
+    from workbench.bus.launch import load_launch
+    from workbench.bus.launcher import Launcher
+
+    path, values = _split(args.target)
+    plan = load_launch(path, values)
+    if args.dry_run:
+        for name, value in sorted(plan.params.items()):
+            text = repr(value)
+            print(f"param {name} = {text if len(text) < 60 else text[:57] + '...'}")
+        for spec in plan.nodes:
+            extra = " ".join([*spec.args, *(f"{a}:={b}" for a, b in spec.remaps.items())])
+            print(f"node {spec.full_name}: {spec.pkg}/{spec.type} {extra}".rstrip())
+        return 0
+    launcher = Launcher(plan, uri=args.uri, near=path.resolve().parent)
+    try:
+        launcher.start()
+        launcher.wait()
+    finally:
+        launcher.shutdown()
+    return 0

@@ -1,0 +1,125 @@
+"""``workbench slam LOG``: build an occupancy map from a laser log (like gmapping + map_saver)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+from workbench.errors import MappingError
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    """Add the command's arguments."""
+    parser.description = (
+        "Run graph SLAM on a CARMEN log (plain or .gz) or a ROS 1 bag with LaserScan and "
+        "odometry, and save the map as map_saver does (NAME.pgm + NAME.yaml), a picture "
+        "with the trajectory (NAME.png) and the trajectory (NAME.csv: t, x, y, theta)."
+    )
+    parser.add_argument("log", help="CARMEN log or ROS 1 bag")
+    parser.add_argument(
+        "--out", default="map", help="output DIR/NAME without extension (default: ./map)"
+    )
+    parser.add_argument(
+        "--resolution", type=float, default=0.05, help="map cell size in metres (default 0.05)"
+    )
+    parser.add_argument("--png", help="where to write the picture (default: NAME.png)")
+    parser.add_argument("--scan-topic", help="LaserScan topic of a bag (default: the only one)")
+    parser.add_argument(
+        "--odom-topic", help="Odometry topic of a bag (default: the only one, or /tf)"
+    )
+    parser.add_argument(
+        "--max-range", type=float, default=30.0, help="readings beyond this are not mapped (m)"
+    )
+    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+
+
+class ProgressBar:
+    """A one-line progress bar on stderr, redrawn at most ten times a second."""
+
+    def __init__(self, total: int, label: str, enabled: bool = True) -> None:
+        self.total = max(total, 1)
+        self.label = label
+        self.enabled = enabled
+        self.start = time.monotonic()
+        self.last = 0.0
+
+    def __call__(self, done: int, total: int) -> None:
+        now = time.monotonic()
+        if not self.enabled or (now - self.last < 0.1 and done < total):
+            return
+        self.last = now
+        width = 30
+        filled = int(width * done / self.total)
+        bar = "#" * filled + "." * (width - filled)
+        sys.stderr.write(
+            f"\r{self.label} [{bar}] {100 * done // self.total:3d}% {done}/{total} "
+            f"{now - self.start:5.1f} s"
+        )
+        if done >= total:
+            sys.stderr.write("\n")
+        sys.stderr.flush()
+
+
+def run(args: argparse.Namespace) -> int:
+    """Read the log, run SLAM, write the map files; returns the exit status."""
+    import numpy as np
+
+    from workbench.mapping import SlamConfig, build_map, read_log, run_slam, save_map
+    from workbench.mapping.render import save_png
+
+    if not (args.resolution > 0 and np.isfinite(args.resolution)):
+        raise MappingError(
+            f"--resolution must be a positive number of metres, got {args.resolution}"
+        )
+    out = Path(args.out)
+    if out.suffix in (".yaml", ".pgm", ".png"):
+        out = out.with_suffix("")
+    if not out.parent.is_dir():
+        raise MappingError(
+            "the output directory does not exist", path=out.parent, hint="create it or change --out"
+        )
+    started = time.perf_counter()
+    cpu_started = time.process_time()
+    options = {}
+    if args.scan_topic:
+        options["scan_topic"] = args.scan_topic
+    if args.odom_topic:
+        options["odom_topic"] = args.odom_topic
+    log = read_log(args.log, **options)
+    for warning in log.warnings[:10]:
+        print(f"warning: {warning}", file=sys.stderr)
+    if len(log.warnings) > 10:
+        print(f"warning: ... and {len(log.warnings) - 10} more skipped lines", file=sys.stderr)
+    scans = log.scans
+    bar = ProgressBar(len(scans), "slam", enabled=not args.quiet)
+    result = run_slam(scans, SlamConfig(resolution=args.resolution), progress=bar)
+    grid = build_map(scans, result.poses, args.resolution, args.max_range).to_map()
+    pgm, yaml_path = save_map(grid, out)
+    png = save_png(
+        grid,
+        Path(args.png) if args.png else out.with_name(out.name + ".png"),
+        [(result.poses, (220, 30, 30))],
+        scale=2 if max(grid.width, grid.height) < 1000 else 1,
+    )
+    csv = out.with_name(out.name + ".csv")
+    rows = np.column_stack([result.stamps, result.poses])
+    try:
+        np.savetxt(csv, rows, delimiter=",", header="t,x,y,theta", comments="", fmt="%.6f")
+    except OSError as exc:
+        raise MappingError(f"cannot write trajectory: {exc.strerror}", path=csv) from None
+    wall = time.perf_counter() - started
+    cpu = time.process_time() - cpu_started
+    speed = f", {log.duration / wall:.0f}x real time" if log.duration > 0 else ""
+    print(
+        f"{len(scans)} scans over {log.duration:.1f} s from {args.log}: "
+        f"{len(result.keyframes)} keyframes, {len(result.loop_closures)} loop closures"
+    )
+    print(
+        f"map {grid.width} x {grid.height} cells at {grid.resolution:.3f} m, "
+        f"origin ({grid.origin[0]:.3f}, {grid.origin[1]:.3f}, {grid.origin[2]:.3f})"
+    )
+    print(f"wrote {yaml_path}, {pgm}, {png}, {csv}")
+    print(f"took {wall:.1f} s wall, {cpu:.1f} s CPU{speed}")
+    return 0

@@ -1,0 +1,351 @@
+"""``workbench topic``: rostopic (list, echo, hz, bw, type, info, pub) and rqt_plot (plot)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import threading
+import time
+from typing import Any
+
+PUB_USAGE = "workbench topic pub [-1 | -r RATE | -l] TOPIC TYPE [--] [ARGS ...]"
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
+    listing = verbs.add_parser("list", help="list topics in use")
+    listing.add_argument("-v", "--verbose", action="store_true", help="types and counts")
+    listing.add_argument("-p", dest="publishers", action="store_true", help="only published")
+    listing.add_argument("-s", dest="subscribers", action="store_true", help="only subscribed")
+    echo = verbs.add_parser("echo", help="print messages (YAML documents separated by ---)")
+    echo.add_argument("topic", help="topic, or topic/field such as /turtle1/pose/x")
+    echo.add_argument("-n", type=int, metavar="COUNT", help="exit after COUNT messages")
+    echo.add_argument("--noarr", action="store_true", help="print array lengths, not contents")
+    echo.add_argument("--timeout", type=float, metavar="SECS", help="give up after SECS seconds")
+    for verb, text in (("hz", "print the publishing rate"), ("bw", "print the bandwidth used")):
+        meter = verbs.add_parser(verb, help=text)
+        meter.add_argument("topic")
+        meter.add_argument("-w", "--window", type=int, help="samples in the window")
+        meter.add_argument("--duration", type=float, metavar="SECS", help="stop after SECS")
+    kind = verbs.add_parser("type", help="print a topic's message type")
+    kind.add_argument("topic")
+    info = verbs.add_parser("info", help="print a topic's type, publishers and subscribers")
+    info.add_argument("topic")
+    pub = verbs.add_parser(
+        "pub", help="publish a message built from YAML arguments", usage=PUB_USAGE
+    )
+    pub.add_argument("words", nargs=argparse.REMAINDER, help=argparse.SUPPRESS)
+    plot = verbs.add_parser("plot", help="plot numeric fields over time (rqt_plot)")
+    plot.add_argument("fields", nargs="+", metavar="FIELD", help="e.g. /turtle1/pose/x")
+    plot.add_argument("--seconds", type=float, default=10.0, help="how long to record (10)")
+    plot.add_argument("--png", metavar="OUT", help="write a PNG instead of showing a window")
+
+
+def run(args: argparse.Namespace) -> int:
+    from workbench.introspect.session import cli_node
+
+    if args.verb == "pub":
+        options = parse_pub_words(args.words)
+    node = cli_node("rostopic")
+    try:
+        if args.verb == "list":
+            return _list(node, args)
+        if args.verb in ("type", "info"):
+            return _type_info(node, args)
+        if args.verb == "echo":
+            return _echo(node, args)
+        if args.verb in ("hz", "bw"):
+            return _meter(node, args)
+        if args.verb == "plot":
+            return _plot(node, args)
+        return _pub(node, options)
+    finally:
+        node.shutdown()
+
+
+def _list(node: Any, args: argparse.Namespace) -> int:
+    from workbench.introspect.graphtext import topic_list
+    from workbench.introspect.session import graph
+
+    text = topic_list(
+        _without(graph(node.bus), node.name),
+        verbose=args.verbose,
+        publishers_only=args.publishers,
+        subscribers_only=args.subscribers,
+    )
+    if text:
+        print(text)
+    return 0
+
+
+def _without(graph: Any, name: str) -> Any:
+    """The graph without the tool's own node."""
+    graph.nodes.pop(name, None)
+    for topic in list(graph.topics.values()):
+        for ends in (topic.publishers, topic.subscribers):
+            if name in ends:
+                ends.remove(name)
+        if not topic.publishers and not topic.subscribers:
+            del graph.topics[topic.name]
+    return graph
+
+
+def _type_info(node: Any, args: argparse.Namespace) -> int:
+    from workbench.introspect.echo import split_topic_field
+    from workbench.introspect.graphtext import require_topic, topic_info
+    from workbench.introspect.session import graph
+
+    g = _without(graph(node.bus), node.name)
+    if args.verb == "info":
+        print(topic_info(g, args.topic))
+        return 0
+    topic, fields = split_topic_field(_absolute(args.topic), g.topics)
+    record = require_topic(g, topic)
+    print(record.type if not fields else f"{record.type} {'/'.join(fields)}")
+    return 0
+
+
+def _absolute(name: str) -> str:
+    return name if name.startswith("/") else "/" + name
+
+
+def _resolve_topic(node: Any, path: str) -> tuple[str, list[str]]:
+    """Topic and field path; an unknown topic is waited for (rostopic says so)."""
+    from workbench.errors import BusError
+    from workbench.introspect.echo import split_topic_field
+    from workbench.introspect.session import graph
+
+    path = _absolute(path)
+    try:
+        return split_topic_field(path, _without(graph(node.bus), node.name).topics)
+    except BusError:
+        print(f"WARNING: topic [{path}] does not appear to be published yet", file=sys.stderr)
+        return path, []
+
+
+def _wait(node: Any, done: threading.Event, timeout: float | None, what: str) -> None:
+    from workbench.errors import BusError
+
+    finished = done.wait(timeout) if timeout is not None else _wait_forever(done)
+    if not finished:
+        raise BusError(
+            f"no message on {what} within {timeout:g} s", hint="is anything publishing it?"
+        )
+
+
+def _wait_forever(done: threading.Event) -> bool:
+    while not done.wait(0.2):
+        pass
+    return True
+
+
+def _echo(node: Any, args: argparse.Namespace) -> int:
+    from workbench.bus import AnyMsg
+    from workbench.introspect.echo import format_echo, get_field
+
+    topic, fields = _resolve_topic(node, args.topic)
+    done = threading.Event()
+    state = {"count": 0, "error": None}
+    lock = threading.Lock()
+
+    def callback(msg: Any) -> None:
+        with lock:
+            if done.is_set():
+                return
+            try:
+                value = get_field(msg, fields, topic=topic) if fields else msg
+            except Exception as error:  # reported once, from the main thread
+                state["error"] = error
+                done.set()
+                return
+            print(format_echo(value, noarr=args.noarr), flush=True)
+            state["count"] += 1
+            if args.n is not None and state["count"] >= args.n:
+                done.set()
+
+    node.create_subscription(topic, AnyMsg, callback, queue_size=0)
+    try:
+        _wait(node, done, args.timeout, topic)
+    except KeyboardInterrupt:
+        return 0
+    if state["error"] is not None:
+        raise state["error"]
+    return 0
+
+
+def _meter(node: Any, args: argparse.Namespace) -> int:
+    from workbench.bus import AnyMsg
+    from workbench.introspect.rates import BwMeter, HzMeter
+
+    topic, _ = _resolve_topic(node, args.topic)
+    meter: Any = HzMeter(args.window or 50000) if args.verb == "hz" else BwMeter(args.window or 100)
+    lock = threading.Lock()
+
+    def callback(msg: Any) -> None:
+        now = time.monotonic()
+        with lock:
+            if args.verb == "hz":
+                meter.add(now)
+            else:
+                from workbench.msgs import serialize
+
+                meter.add(now, len(serialize(msg)) if not isinstance(msg, bytes) else len(msg))
+
+    node.create_subscription(topic, AnyMsg, callback, queue_size=0)
+    print(f"subscribed to [{topic}]", flush=True)
+    start = time.monotonic()
+    try:
+        while args.duration is None or time.monotonic() - start < args.duration:
+            time.sleep(min(1.0, args.duration or 1.0))
+            with lock:
+                text = meter.report()
+            print(text if text else "no new messages", flush=True)
+    except KeyboardInterrupt:
+        pass
+    return 0
+
+
+def parse_pub_words(words: list[str]) -> dict[str, Any]:
+    """rostopic pub's command line: options may sit between the positionals; ``--`` ends them.
+
+    Raises:
+        BusError: missing topic/type or a bad option value.
+    """
+    from workbench.errors import BusError
+
+    options: dict[str, Any] = {"once": False, "rate": None, "latch": False, "positional": []}
+    rest: list[str] = []
+    i = 0
+    while i < len(words):
+        word = words[i]
+        if word == "--":
+            rest = words[i + 1 :]
+            break
+        if word in ("-1", "--once"):
+            options["once"] = True
+        elif word in ("-l", "--latch"):
+            options["latch"] = True
+        elif word in ("-r", "--rate") or word.startswith("--rate="):
+            value = (
+                word.split("=", 1)[1]
+                if "=" in word
+                else (words[i + 1] if i + 1 < len(words) else "")
+            )
+            i += 0 if "=" in word else 1
+            try:
+                options["rate"] = float(value)
+            except ValueError:
+                raise BusError(f"-r needs a rate in Hz, got {value!r}", hint=PUB_USAGE) from None
+            if not options["rate"] > 0:
+                raise BusError(f"-r needs a positive rate, got {value}", hint=PUB_USAGE)
+        elif word.startswith("-") and not _is_number(word) and len(options["positional"]) < 2:
+            raise BusError(f"unknown option {word}", hint=PUB_USAGE)
+        else:
+            options["positional"].append(word)
+        i += 1
+    positional = options.pop("positional") + rest
+    if len(positional) < 2:
+        raise BusError("pub needs a topic and a message type", hint=PUB_USAGE)
+    options["topic"], options["type"], options["args"] = (
+        positional[0],
+        positional[1],
+        positional[2:],
+    )
+    return options
+
+
+def _is_number(word: str) -> bool:
+    try:
+        float(word)
+    except ValueError:
+        return False
+    return True
+
+
+def _pub(node: Any, options: dict[str, Any]) -> int:
+    from workbench.introspect.args import message_from_args
+    from workbench.introspect.session import settle
+    from workbench.msgs import get_type
+
+    topic = node.resolve_name(options["topic"])
+    cls = get_type(options["type"])
+    msg = message_from_args(cls, options["args"], what=f"topic {topic}")
+    pub = node.create_publisher(topic, cls, latch=not options["rate"])
+    bus = node.bus
+
+    def has_subscriber() -> bool:
+        record = bus.graph().topics.get(topic)
+        return bool(record and [s for s in record.subscribers if s != node.name])
+
+    try:
+        if options["rate"]:
+            period = 1.0 / options["rate"]
+            settle(bus, has_subscriber)
+            next_time = time.monotonic()
+            while True:
+                pub.publish(msg)
+                next_time += period
+                time.sleep(max(0.0, next_time - time.monotonic()))
+        settle(bus, has_subscriber, timeout=3.0)
+        if options["once"]:
+            print("publishing and latching message for 3.0 seconds", flush=True)
+            pub.publish(msg)
+            bus.spin_until(lambda: False, timeout=0.3 if not bus.is_connected else 1.0)
+            return 0
+        print("publishing and latching message. Press ctrl-C to terminate", flush=True)
+        pub.publish(msg)
+        while True:
+            time.sleep(0.2)
+    except KeyboardInterrupt:
+        return 0
+
+
+def _plot(node: Any, args: argparse.Namespace) -> int:
+    import os
+
+    from workbench.bus import AnyMsg
+    from workbench.introspect.plot import FieldSeries, plot_series
+
+    series: list[FieldSeries] = []
+    for path in args.fields:
+        topic, fields = _resolve_topic(node, path)
+        if not fields:
+            from workbench.errors import BusError
+
+            raise BusError(f"{path} names a topic, not a field", hint=f"plot e.g. {path}/x")
+        series.append(FieldSeries(path, topic, fields))
+    lock = threading.Lock()
+    errors: list[Exception] = []
+    t0 = time.monotonic()
+
+    def make_callback(items: list[FieldSeries]):
+        def callback(msg: Any) -> None:
+            with lock:
+                for s in items:
+                    try:
+                        s.add(time.monotonic() - t0, msg)
+                    except Exception as error:
+                        errors.append(error)
+
+        return callback
+
+    by_topic: dict[str, list[FieldSeries]] = {}
+    for s in series:
+        by_topic.setdefault(s.topic, []).append(s)
+    for topic, items in by_topic.items():
+        node.create_subscription(topic, AnyMsg, make_callback(items), queue_size=0)
+    png = args.png
+    if png is None and not os.environ.get("DISPLAY"):
+        png = "plot.png"
+    try:
+        while time.monotonic() - t0 < args.seconds and not errors:
+            time.sleep(0.05)
+    except KeyboardInterrupt:
+        pass
+    if errors:
+        raise errors[0]
+    with lock:
+        out = plot_series(series, png, title=", ".join(args.fields))
+    if out is not None:
+        print(f"wrote {out}")
+    return 0

@@ -1,0 +1,229 @@
+"""Laser scans with odometry from ROS 1 bags (``sensor_msgs/LaserScan`` + ``nav_msgs/Odometry`` or ``/tf``).
+
+Reads with rosbags' :class:`~rosbags.highlevel.AnyReader` and its noetic
+typestore. Odometry is the pose of ``base_frame`` in ``odom_frame``, from a
+``nav_msgs/Odometry`` topic or else from ``/tf``; it is interpolated at each
+scan's header stamp. The laser's mounting comes from ``/tf_static`` (or
+``/tf``) when a ``base_frame -> laser frame`` transform exists, else the
+laser is taken to sit at the base.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from workbench.mapping.errors import LogError
+from workbench.mapping.geometry import compose, wrap_angle
+from workbench.mapping.scan import LaserLog, Scan
+
+SCAN_TYPE = "sensor_msgs/msg/LaserScan"
+ODOM_TYPE = "nav_msgs/msg/Odometry"
+TF_TYPE = "tf2_msgs/msg/TFMessage"
+#: Scans up to this far (s) outside the odometry's time span use the nearest odometry.
+EXTRAPOLATION_LIMIT = 0.2
+
+
+def _stamp(header) -> float:
+    return header.stamp.sec + 1e-9 * header.stamp.nanosec
+
+
+def _yaw(q) -> float:
+    return math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
+
+
+def _frame(name: str) -> str:
+    return name.lstrip("/")
+
+
+def _interpolate(times: np.ndarray, poses: np.ndarray, t: float) -> np.ndarray | None:
+    if t < times[0] - EXTRAPOLATION_LIMIT or t > times[-1] + EXTRAPOLATION_LIMIT:
+        return None
+    k = int(np.searchsorted(times, t))
+    if k <= 0:
+        return poses[0].copy()
+    if k >= len(times):
+        return poses[-1].copy()
+    t0, t1 = times[k - 1], times[k]
+    w = 0.0 if t1 <= t0 else (t - t0) / (t1 - t0)
+    a, b = poses[k - 1], poses[k]
+    xy = a[:2] + w * (b[:2] - a[:2])
+    theta = wrap_angle(a[2] + w * wrap_angle(b[2] - a[2]))
+    return np.array([xy[0], xy[1], float(theta)])
+
+
+def read_bag(
+    path: str | Path,
+    *,
+    scan_topic: str | None = None,
+    odom_topic: str | None = None,
+    odom_frame: str = "odom",
+    base_frame: str | None = None,
+) -> LaserLog:
+    """Read scans and odometry from a ROS 1 bag.
+
+    Args:
+        path: The ``.bag`` file.
+        scan_topic: The LaserScan topic; None picks the only one (or ``/scan``).
+        odom_topic: The Odometry topic; None picks the only one, else uses ``/tf``.
+        odom_frame: Parent frame of the odometry transforms on ``/tf``.
+        base_frame: The robot frame; None takes the Odometry's ``child_frame_id``
+            or the only child of ``odom_frame`` on ``/tf``.
+
+    Raises:
+        LogError: missing or corrupt bag, no (or ambiguous) scan topic, no scans.
+    """
+    from rosbags.highlevel import AnyReader
+    from rosbags.typesys import Stores, get_typestore
+
+    path = Path(path)
+    if not path.is_file():
+        raise LogError("bag file not found", path=path)
+    warnings: list[str] = []
+    typestore = get_typestore(Stores.ROS1_NOETIC)
+    try:
+        reader = AnyReader([path], default_typestore=typestore)
+        reader.open()
+    except Exception as exc:  # rosbags raises several unrelated types for bad files
+        raise LogError(f"cannot read bag: {exc}", path=path, hint="is it a ROS 1 bag?") from None
+    try:
+        by_type: dict[str, list[str]] = {}
+        for c in reader.connections:
+            by_type.setdefault(c.msgtype, [])
+            if c.topic not in by_type[c.msgtype]:
+                by_type[c.msgtype].append(c.topic)
+        scan_topics = by_type.get(SCAN_TYPE, [])
+        if scan_topic is None:
+            if len(scan_topics) == 1:
+                scan_topic = scan_topics[0]
+            elif "/scan" in scan_topics:
+                scan_topic = "/scan"
+            elif not scan_topics:
+                raise LogError("the bag has no sensor_msgs/LaserScan topic", path=path)
+            else:
+                raise LogError(
+                    f"the bag has several LaserScan topics: {', '.join(sorted(scan_topics))}",
+                    path=path,
+                    hint="choose one with scan_topic",
+                )
+        elif scan_topic not in scan_topics:
+            raise LogError(
+                f"no LaserScan topic {scan_topic!r} in the bag "
+                f"(LaserScan topics: {', '.join(scan_topics) or 'none'})",
+                path=path,
+            )
+        odom_topics = by_type.get(ODOM_TYPE, [])
+        if odom_topic is None and len(odom_topics) == 1:
+            odom_topic = odom_topics[0]
+        odom_times: list[float] = []
+        odom_poses: list[list[float]] = []
+        mounts: dict[tuple[str, str], np.ndarray] = {}
+        raw_scans = []
+        tf_edges: dict[str, list[tuple[float, list[float]]]] = {}
+        wanted = [
+            c
+            for c in reader.connections
+            if c.topic in (scan_topic, odom_topic, "/tf", "/tf_static")
+        ]
+        for connection, _time, data in reader.messages(connections=wanted):
+            try:
+                msg = reader.deserialize(data, connection.msgtype)
+            except Exception as exc:
+                warnings.append(f"{path}:{connection.topic}: skipped a bad message ({exc})")
+                continue
+            if connection.topic == scan_topic:
+                raw_scans.append(msg)
+            elif connection.topic == odom_topic:
+                p = msg.pose.pose
+                odom_times.append(_stamp(msg.header))
+                odom_poses.append([p.position.x, p.position.y, _yaw(p.orientation)])
+                if base_frame is None:
+                    base_frame = _frame(msg.child_frame_id)
+            elif connection.msgtype == TF_TYPE:
+                for tf in msg.transforms:
+                    parent, child = _frame(tf.header.frame_id), _frame(tf.child_frame_id)
+                    tr = tf.transform
+                    pose = [tr.translation.x, tr.translation.y, _yaw(tr.rotation)]
+                    mounts[(parent, child)] = np.array(pose)
+                    if parent == _frame(odom_frame):
+                        tf_edges.setdefault(child, []).append((_stamp(tf.header), pose))
+    except LogError:
+        raise
+    except Exception as exc:
+        raise LogError(f"cannot read bag: {exc}", path=path) from None
+    finally:
+        reader.close()
+    if not odom_times and tf_edges:
+        if base_frame is None:
+            if len(tf_edges) > 1:
+                raise LogError(
+                    f"several frames hang off {odom_frame!r} on /tf: {', '.join(sorted(tf_edges))}",
+                    path=path,
+                    hint="choose one with base_frame",
+                )
+            base_frame = next(iter(tf_edges))
+        for stamp, pose in sorted(tf_edges.get(base_frame, [])):
+            odom_times.append(stamp)
+            odom_poses.append(pose)
+    if not raw_scans:
+        raise LogError(f"no messages on {scan_topic}", path=path)
+    if not odom_times:
+        warnings.append(
+            f"{path}: no odometry (nav_msgs/Odometry or /tf {odom_frame} -> base); "
+            "scans are matched without a motion prior"
+        )
+    times = np.array(odom_times)
+    poses = np.array(odom_poses).reshape(-1, 3)
+    order = np.argsort(times, kind="stable")
+    times, poses = times[order], poses[order]
+    scans: list[Scan] = []
+    for index, msg in enumerate(raw_scans):
+        stamp = _stamp(msg.header)
+        mount = mounts.get((base_frame or "", _frame(msg.header.frame_id)), np.zeros(3))
+        if len(times):
+            base = _interpolate(times, poses, stamp)
+            if base is None:
+                warnings.append(
+                    f"{path}:{scan_topic}[{index}]: skipped scan at t={stamp:.3f}, "
+                    "outside the odometry's time span"
+                )
+                continue
+        else:
+            base = np.zeros(3)
+        n = len(msg.ranges)
+        angles = msg.angle_min + msg.angle_increment * np.arange(n)
+        scans.append(
+            Scan(
+                stamp=stamp,
+                ranges=np.asarray(msg.ranges, dtype=float),
+                angles=angles,
+                odom=compose(base, mount),
+                max_range=float(msg.range_max) if msg.range_max > 0 else np.inf,
+                min_range=float(max(msg.range_min, 0.0)),
+                source=f"{path}:{scan_topic}[{index}]",
+            )
+        )
+    if not scans:
+        raise LogError(f"no scan on {scan_topic} falls inside the odometry's time span", path=path)
+    return LaserLog(path, scans, warnings)
+
+
+def read_log(path: str | Path, **bag_options: object) -> LaserLog:
+    """Read a CARMEN log (plain or gzip) or a ROS 1 bag, told apart by their content."""
+    from workbench.mapping.carmen import read_carmen
+
+    path = Path(path)
+    try:
+        with open(path, "rb") as stream:
+            head = stream.read(13)
+    except FileNotFoundError:
+        raise LogError("log file not found", path=path) from None
+    except IsADirectoryError:
+        raise LogError("is a directory, not a log file", path=path) from None
+    except OSError as exc:
+        raise LogError(f"cannot read log: {exc.strerror}", path=path) from None
+    if head.startswith(b"#ROSBAG V2.0"):
+        return read_bag(path, **bag_options)  # type: ignore[arg-type]
+    return read_carmen(path)

@@ -1,0 +1,247 @@
+"""Occupancy grids: log-odds mapping from laser scans and the ``nav_msgs/OccupancyGrid`` layout.
+
+Conventions follow ``nav_msgs/OccupancyGrid`` and REP 103: the grid lies in the
+``map`` frame, ``origin`` ``(x, y, yaw)`` is the pose of the corner of cell
+``(0, 0)``, cells are ``resolution`` metres square, and the data is row-major
+starting at that cell (row index = y cell, column index = x cell). Values are
+occupancy probabilities in percent, ``0..100``, with ``-1`` for unknown.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from workbench.mapping.errors import MappingError
+
+#: Log-odds added to a cell where a beam ends (p = 0.7).
+LOG_ODDS_HIT = 0.85
+#: Log-odds added to each cell a beam passes through (p = 0.4).
+LOG_ODDS_MISS = -0.4
+#: Log-odds are clamped to this range so that a changed world can be re-mapped.
+LOG_ODDS_CLAMP = 5.0
+#: Largest grid :meth:`OccupancyGrid.covering` will allocate (cells).
+MAX_CELLS = 100_000_000
+
+
+def _cells(
+    points: np.ndarray, resolution: float, origin: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Cell indices ``(ix, iy)`` of world points ``(N, 2)`` for a grid with this origin."""
+    c, s = np.cos(origin[2]), np.sin(origin[2])
+    dx = points[:, 0] - origin[0]
+    dy = points[:, 1] - origin[1]
+    lx = c * dx + s * dy
+    ly = -s * dx + c * dy
+    return np.floor(lx / resolution).astype(np.int64), np.floor(ly / resolution).astype(np.int64)
+
+
+@dataclass
+class GridMap:
+    """An occupancy grid as ``nav_msgs/OccupancyGrid`` holds it.
+
+    Attributes:
+        data: ``(height, width)`` int8 array, row 0 at the origin; -1 unknown, 0..100 percent.
+        resolution: Cell size in metres.
+        origin: Pose ``(x, y, yaw)`` of cell (0, 0)'s corner in the map frame (m, rad).
+    """
+
+    data: np.ndarray
+    resolution: float
+    origin: np.ndarray = field(default_factory=lambda: np.zeros(3))
+
+    def __post_init__(self) -> None:
+        self.data = np.asarray(self.data, dtype=np.int8)
+        if self.data.ndim != 2:
+            raise MappingError(f"map data must be 2-D (height, width), got shape {self.data.shape}")
+        if not (np.isfinite(self.resolution) and self.resolution > 0):
+            raise MappingError(f"map resolution must be positive, got {self.resolution}")
+        self.origin = np.asarray(self.origin, dtype=float).reshape(3)
+
+    @property
+    def width(self) -> int:
+        """Number of cells along x."""
+        return int(self.data.shape[1])
+
+    @property
+    def height(self) -> int:
+        """Number of cells along y."""
+        return int(self.data.shape[0])
+
+    def flat(self) -> np.ndarray:
+        """The row-major 1-D data array of the ``nav_msgs/OccupancyGrid`` message."""
+        return self.data.reshape(-1).copy()
+
+    @classmethod
+    def from_flat(
+        cls,
+        data: np.ndarray | list[int],
+        width: int,
+        height: int,
+        resolution: float,
+        origin: np.ndarray | tuple[float, float, float] = (0.0, 0.0, 0.0),
+    ) -> GridMap:
+        """Build from the message layout (``info.width``, ``info.height``, row-major ``data``)."""
+        array = np.asarray(data, dtype=np.int8)
+        if array.size != width * height:
+            raise MappingError(
+                f"map data has {array.size} cells but width*height is {width}*{height}"
+            )
+        return cls(array.reshape(height, width), resolution, np.asarray(origin, dtype=float))
+
+    def world_to_cell(self, points: np.ndarray) -> np.ndarray:
+        """Cell indices ``(N, 2)`` as ``(ix, iy)`` of world points ``(N, 2)``; may lie outside."""
+        ix, iy = _cells(np.atleast_2d(points), self.resolution, self.origin)
+        return np.stack([ix, iy], axis=1)
+
+    def cell_to_world(self, cells: np.ndarray) -> np.ndarray:
+        """World coordinates ``(N, 2)`` of the centres of cells ``(N, 2)`` given as ``(ix, iy)``."""
+        cells = np.atleast_2d(cells).astype(float)
+        lx = (cells[:, 0] + 0.5) * self.resolution
+        ly = (cells[:, 1] + 0.5) * self.resolution
+        c, s = np.cos(self.origin[2]), np.sin(self.origin[2])
+        return np.stack(
+            [self.origin[0] + c * lx - s * ly, self.origin[1] + s * lx + c * ly], axis=1
+        )
+
+    def trinary(self, free_max: int = 25, occupied_min: int = 65) -> GridMap:
+        """The map reduced to 0 / 100 / -1 with map_saver's default thresholds (percent)."""
+        out = np.full_like(self.data, -1)
+        out[(self.data >= 0) & (self.data <= free_max)] = 0
+        out[(self.data >= occupied_min) & (self.data <= 100)] = 100
+        return GridMap(out, self.resolution, self.origin.copy())
+
+
+class OccupancyGrid:
+    """A log-odds occupancy grid updated from laser scans.
+
+    Args:
+        width: Cells along x.
+        height: Cells along y.
+        resolution: Cell size (m).
+        origin: Pose ``(x, y, yaw)`` of cell (0, 0)'s corner in the map frame.
+        hit: Log-odds added where a beam ends.
+        miss: Log-odds added along a beam.
+        clamp: Log-odds are kept in ``[-clamp, clamp]``.
+    """
+
+    def __init__(
+        self,
+        width: int,
+        height: int,
+        resolution: float = 0.05,
+        origin: np.ndarray | tuple[float, float, float] = (0.0, 0.0, 0.0),
+        *,
+        hit: float = LOG_ODDS_HIT,
+        miss: float = LOG_ODDS_MISS,
+        clamp: float = LOG_ODDS_CLAMP,
+    ) -> None:
+        if width <= 0 or height <= 0:
+            raise MappingError(f"grid size must be positive, got {width} x {height}")
+        if not (np.isfinite(resolution) and resolution > 0):
+            raise MappingError(f"grid resolution must be positive, got {resolution}")
+        self.resolution = float(resolution)
+        self.origin = np.asarray(origin, dtype=float).reshape(3)
+        self.log_odds = np.zeros((int(height), int(width)), dtype=np.float32)
+        self.observed = np.zeros((int(height), int(width)), dtype=bool)
+        self.hit, self.miss, self.clamp = float(hit), float(miss), float(clamp)
+
+    @classmethod
+    def covering(
+        cls,
+        points: np.ndarray,
+        resolution: float = 0.05,
+        margin: float = 1.0,
+        **kwargs: float,
+    ) -> OccupancyGrid:
+        """An axis-aligned grid that covers world points ``(N, 2)`` plus ``margin`` metres."""
+        points = np.asarray(points, dtype=float).reshape(-1, 2)
+        points = points[np.all(np.isfinite(points), axis=1)]
+        if len(points) == 0:
+            raise MappingError("cannot size a grid from no points")
+        low = np.floor((points.min(axis=0) - margin) / resolution) * resolution
+        high = points.max(axis=0) + margin
+        size = np.ceil((high - low) / resolution).astype(int) + 1
+        if float(size[0]) * float(size[1]) > MAX_CELLS:
+            raise MappingError(
+                f"a grid covering {high[0] - low[0]:.0f} m x {high[1] - low[1]:.0f} m at "
+                f"{resolution} m would need {size[0]} x {size[1]} cells",
+                hint="use a coarser resolution or a smaller max range",
+            )
+        return cls(int(size[0]), int(size[1]), resolution, (low[0], low[1], 0.0), **kwargs)
+
+    @property
+    def width(self) -> int:
+        """Cells along x."""
+        return int(self.log_odds.shape[1])
+
+    @property
+    def height(self) -> int:
+        """Cells along y."""
+        return int(self.log_odds.shape[0])
+
+    def integrate_scan(
+        self,
+        pose: np.ndarray,
+        ranges: np.ndarray,
+        angles: np.ndarray,
+        *,
+        max_range: float = np.inf,
+        min_range: float = 0.0,
+    ) -> None:
+        """Update the grid with one scan taken by a sensor at ``pose``.
+
+        Every cell a beam passes through gets a miss, the cell where it ends a
+        hit (a cell both passed and hit in the same scan counts as hit). Beams
+        at or beyond ``max_range``, below or at ``min_range``, or not finite
+        mark nothing.
+
+        Args:
+            pose: Sensor pose ``(x, y, theta)`` in the map frame (m, rad).
+            ranges: Beam lengths (m).
+            angles: Beam directions in the sensor frame (rad), same length.
+            max_range: Readings ``>= max_range`` mean "no return".
+            min_range: Readings ``<= min_range`` are invalid.
+        """
+        ranges = np.asarray(ranges, dtype=float)
+        angles = np.asarray(angles, dtype=float)
+        with np.errstate(invalid="ignore"):
+            ok = np.isfinite(ranges) & (ranges > min_range) & (ranges < max_range)
+        if not ok.any():
+            return
+        r = ranges[ok]
+        direction = angles[ok] + pose[2]
+        ends = np.stack([pose[0] + r * np.cos(direction), pose[1] + r * np.sin(direction)], 1)
+        # Sample each beam every half cell from the sensor up to (not including) its end.
+        steps = np.maximum(np.ceil(r / (0.5 * self.resolution)).astype(np.int64), 1)
+        beam = np.repeat(np.arange(len(r)), steps)
+        k = np.arange(steps.sum()) - np.repeat(np.cumsum(steps) - steps, steps)
+        t = k / steps[beam]
+        samples = pose[:2] + (ends[beam] - pose[:2]) * t[:, None]
+        free = self._flat_index(samples)
+        hits = self._flat_index(ends)
+        free = np.setdiff1d(free, hits)
+        hits = np.unique(hits)
+        flat_lo = self.log_odds.reshape(-1)
+        flat_obs = self.observed.reshape(-1)
+        flat_lo[free] += self.miss
+        flat_lo[hits] += self.hit
+        np.clip(flat_lo, -self.clamp, self.clamp, out=flat_lo)
+        flat_obs[free] = True
+        flat_obs[hits] = True
+
+    def _flat_index(self, points: np.ndarray) -> np.ndarray:
+        ix, iy = _cells(points, self.resolution, self.origin)
+        inside = (ix >= 0) & (ix < self.width) & (iy >= 0) & (iy < self.height)
+        return np.unique(iy[inside] * self.width + ix[inside])
+
+    def probabilities(self) -> np.ndarray:
+        """Occupancy probability per cell, ``(height, width)``; 0.5 where never observed."""
+        return 1.0 / (1.0 + np.exp(-self.log_odds.astype(float)))
+
+    def to_map(self) -> GridMap:
+        """The grid in ``nav_msgs/OccupancyGrid`` form (percent, -1 where never observed)."""
+        percent = np.rint(self.probabilities() * 100.0).astype(np.int8)
+        data = np.where(self.observed, percent, np.int8(-1)).astype(np.int8)
+        return GridMap(data, self.resolution, self.origin.copy())

@@ -1,0 +1,104 @@
+"""Timestamped laser scans with the odometry they were taken at."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+
+@dataclass
+class Scan:
+    """One planar laser scan.
+
+    Attributes:
+        stamp: Time (s).
+        ranges: Beam lengths (m); NaN, inf, ``<= min_range`` and ``>= max_range`` mean no return.
+        angles: Beam directions in the sensor frame (rad), counter-clockwise, 0 straight ahead.
+        odom: Odometric pose ``(x, y, theta)`` of the **sensor** in the odometry frame (m, rad).
+        max_range: Readings at or beyond this are "no return" (m).
+        min_range: Readings at or below this are invalid (m).
+        reference: A reference pose of the sensor in the map frame when the log has one
+            (CARMEN's corrected ``x y theta``), else None.
+        source: Where the scan came from (``file:line`` or ``bag:topic``), for messages.
+    """
+
+    stamp: float
+    ranges: np.ndarray
+    angles: np.ndarray
+    odom: np.ndarray
+    max_range: float = np.inf
+    min_range: float = 0.0
+    reference: np.ndarray | None = None
+    source: str = ""
+
+    def valid(self) -> np.ndarray:
+        """Boolean mask of readings that are real returns."""
+        with np.errstate(invalid="ignore"):
+            return (
+                np.isfinite(self.ranges)
+                & (self.ranges > self.min_range)
+                & (self.ranges < self.max_range)
+            )
+
+    def points(self, max_range: float = np.inf) -> np.ndarray:
+        """The valid returns as points ``(N, 2)`` in the sensor frame, up to ``max_range``."""
+        ok = self.valid()
+        with np.errstate(invalid="ignore"):
+            ok &= self.ranges <= max_range
+        r = self.ranges[ok]
+        a = self.angles[ok]
+        return np.stack([r * np.cos(a), r * np.sin(a)], axis=1)
+
+
+def densify(points: np.ndarray, spacing: float = 0.025, max_gap: float = 0.3) -> np.ndarray:
+    """Points ``(N, 2)`` plus points every ``spacing`` metres between consecutive points closer
+    than ``max_gap`` (they most likely lie on one surface), so a sparse far wall becomes a line.
+    """
+    if len(points) < 2:
+        return points
+    gaps = np.diff(points, axis=0)
+    length = np.hypot(gaps[:, 0], gaps[:, 1])
+    fill = (length < max_gap) & (length > spacing)
+    counts = np.where(fill, np.floor(length / spacing).astype(np.int64), 0)
+    if counts.sum() == 0:
+        return points
+    seg = np.repeat(np.arange(len(gaps)), counts)
+    k = np.arange(counts.sum()) - np.repeat(np.cumsum(counts) - counts, counts) + 1
+    t = k / (counts[seg] + 1.0)
+    extra = points[seg] + gaps[seg] * t[:, None]
+    return np.concatenate([points, extra])
+
+
+@dataclass
+class LaserLog:
+    """A laser log read into memory.
+
+    Attributes:
+        path: The file it came from.
+        scans: Scans in file order.
+        warnings: One line per skipped or repaired line (``path:line: what``).
+    """
+
+    path: Path
+    scans: list[Scan]
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def duration(self) -> float:
+        """Seconds from the first to the last scan (0 for one scan)."""
+        if len(self.scans) < 2:
+            return 0.0
+        stamps = [s.stamp for s in self.scans]
+        return float(max(stamps) - min(stamps))
+
+    def odometry(self) -> np.ndarray:
+        """Sensor odometry poses ``(N, 3)`` of all scans."""
+        return np.array([s.odom for s in self.scans], dtype=float).reshape(-1, 3)
+
+    def references(self) -> np.ndarray | None:
+        """Reference poses ``(N, 3)`` when every scan has one, else None."""
+        if not self.scans or any(s.reference is None for s in self.scans):
+            return None
+        return np.array([s.reference for s in self.scans], dtype=float)

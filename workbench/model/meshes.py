@@ -1,0 +1,89 @@
+"""Make mesh files readable by Drake: OBJ/glTF pass through, STL/DAE/PLY become OBJ.
+
+Converted meshes go to a cache directory (``$WORKBENCH_CACHE_DIR``, else
+``$XDG_CACHE_HOME/workbench/meshes``, else ``~/.cache/workbench/meshes``),
+keyed by the source path, size and modification time, so a mesh is converted
+once.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+from pathlib import Path
+
+from workbench.errors import ModelError
+
+#: Formats Drake's parser and Meshcat read directly.
+NATIVE_FORMATS = (".obj", ".gltf", ".glb", ".vtk")
+#: Formats converted to OBJ with trimesh first.
+CONVERTED_FORMATS = (".stl", ".dae", ".ply", ".off")
+
+
+class MeshError(ModelError):
+    """A mesh file is missing, in a format nobody here reads, or fails to convert."""
+
+
+def cache_dir() -> Path:
+    """The directory converted meshes are written to (created on demand)."""
+    explicit = os.environ.get("WORKBENCH_CACHE_DIR")
+    if explicit:
+        base = Path(explicit)
+    else:
+        xdg = os.environ.get("XDG_CACHE_HOME")
+        base = (Path(xdg) if xdg else Path.home() / ".cache") / "workbench"
+    return base / "meshes"
+
+
+def check_mesh(path: Path, *, where: Path | None = None, line: int | None = None) -> None:
+    """Raise :class:`MeshError` if ``path`` is missing or in an unsupported format."""
+    suffix = path.suffix.lower()
+    if suffix not in NATIVE_FORMATS + CONVERTED_FORMATS:
+        raise MeshError(
+            f"unsupported mesh format '{suffix or path.name}' ({path})",
+            path=where,
+            line=line,
+            hint="use .obj, .gltf, .stl, .dae or .ply",
+        )
+    if not path.is_file():
+        raise MeshError(
+            f"mesh file not found: {path}",
+            path=where,
+            line=line,
+            hint="check the filename and the package:// path",
+        )
+
+
+def prepare_mesh(path: Path, *, where: Path | None = None, line: int | None = None) -> Path:
+    """Return a path Drake can read for the mesh at ``path``, converting if needed.
+
+    Raises:
+        MeshError: Missing file, unsupported format, or a failed conversion.
+    """
+    check_mesh(path, where=where, line=line)
+    suffix = path.suffix.lower()
+    if suffix in NATIVE_FORMATS:
+        return path.resolve()
+    stat = path.stat()
+    key = hashlib.sha1(f"{path.resolve()}|{stat.st_size}|{stat.st_mtime_ns}".encode()).hexdigest()
+    target = cache_dir() / f"{path.stem}-{key[:16]}.obj"
+    if target.is_file():
+        return target
+    try:
+        import trimesh
+
+        mesh = trimesh.load(str(path), force="mesh")
+        if len(mesh.faces) == 0:
+            raise ValueError("the mesh has no triangles")
+        target.parent.mkdir(parents=True, exist_ok=True)
+        partial = target.with_suffix(f".{os.getpid()}.tmp")
+        mesh.export(str(partial), file_type="obj")
+        partial.replace(target)
+    except Exception as error:  # trimesh raises many kinds; all mean "cannot convert"
+        hint = "convert it to .obj yourself"
+        if suffix == ".dae":
+            hint = "reading .dae needs 'pip install pycollada', or convert it to .obj"
+        raise MeshError(
+            f"cannot convert mesh {path} to OBJ: {error}", path=where, line=line, hint=hint
+        ) from None
+    return target

@@ -1,0 +1,383 @@
+"""Read a URDF file into plain records, keeping the line of every element.
+
+This is workbench's own reading of the XML (with lxml), used for the
+``check`` report, the graph, and the :class:`JointInfo`/:class:`LinkInfo`
+lists of a loaded robot. Drake reads the same text separately to build the
+plant. Only problems that make the file unreadable raise here; everything a
+model can get *wrong* while still being readable is left to
+:mod:`workbench.model.check`.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+from lxml import etree
+
+from workbench.errors import ModelError
+from workbench.model.info import JointInfo, LinkInfo
+
+JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
+
+
+class UrdfSyntaxError(ModelError):
+    """The file is not a readable URDF (bad XML, missing names, bad numbers)."""
+
+
+@dataclass
+class Geometry:
+    """A ``<geometry>`` child: box, cylinder, sphere, capsule or mesh (sizes in metres)."""
+
+    kind: str
+    line: int | None
+    size: tuple[float, ...] = ()
+    filename: str | None = None
+    scale: tuple[float, float, float] = (1.0, 1.0, 1.0)
+
+
+@dataclass
+class Shape:
+    """A ``<visual>`` or ``<collision>`` element."""
+
+    line: int | None
+    geometry: Geometry | None
+    xyz: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    rpy: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    material: str | None = None
+    rgba: tuple[float, float, float, float] | None = None
+    material_line: int | None = None
+
+
+@dataclass
+class Inertial:
+    """An ``<inertial>`` element: mass (kg) and inertia (kg m^2) about the centre of mass."""
+
+    line: int | None
+    mass: float | None
+    inertia: np.ndarray | None
+    xyz: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    rpy: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    mass_line: int | None = None
+    inertia_line: int | None = None
+
+
+@dataclass
+class Link:
+    """A ``<link>`` element."""
+
+    name: str
+    line: int | None
+    visuals: list[Shape] = field(default_factory=list)
+    collisions: list[Shape] = field(default_factory=list)
+    inertial: Inertial | None = None
+
+    def info(self) -> LinkInfo:
+        mass = self.inertial.mass if self.inertial is not None else None
+        return LinkInfo(self.name, bool(self.visuals), bool(self.collisions), mass, self.line)
+
+
+@dataclass
+class Material:
+    """A named ``<material>`` at robot level."""
+
+    name: str
+    line: int | None
+    rgba: tuple[float, float, float, float] | None
+    texture: str | None = None
+
+
+@dataclass
+class UrdfDocument:
+    """Everything workbench reads from one URDF file."""
+
+    path: Path | None
+    name: str
+    links: list[Link]
+    joints: list[JointInfo]
+    materials: dict[str, Material]
+    root: etree._Element
+    duplicate_materials: list[Material] = field(default_factory=list)
+
+    def link(self, name: str) -> Link | None:
+        return next((link for link in self.links if link.name == name), None)
+
+    def joint(self, name: str) -> JointInfo | None:
+        return next((joint for joint in self.joints if joint.name == name), None)
+
+    def element_at(self, line: int | None) -> str:
+        """``link 'x'`` or ``joint 'y'`` for the element on ``line`` (``model`` if none)."""
+        if line is None:
+            return "model"
+        for element in self.root.iter():
+            if element.sourceline == line and isinstance(element.tag, str):
+                if element.tag in ("link", "joint"):
+                    return f"{element.tag} '{element.get('name')}'"
+                for ancestor in element.iterancestors():
+                    if ancestor.tag in ("link", "joint"):
+                        return f"{ancestor.tag} '{ancestor.get('name')}'"
+        return "model"
+
+    def link_infos(self) -> list[LinkInfo]:
+        return [link.info() for link in self.links]
+
+    def to_string(self) -> str:
+        return etree.tostring(self.root, encoding="unicode")
+
+
+class _Reader:
+    def __init__(self, path: Path | None) -> None:
+        self.path = path
+
+    def fail(self, message: str, element: etree._Element | None, hint: str | None = None):
+        line = element.sourceline if element is not None else None
+        raise UrdfSyntaxError(message, path=self.path, line=line, hint=hint)
+
+    def floats(self, element, attribute: str, count: int | None, what: str, default=None):
+        text = element.get(attribute)
+        if text is None:
+            if default is not None:
+                return default
+            self.fail(f"{what} has no '{attribute}' attribute", element)
+        parts = text.split()
+        try:
+            values = tuple(float(part) for part in parts)
+        except ValueError:
+            self.fail(
+                f'{what}: {attribute}="{text}" is not a number',
+                element,
+                hint="write plain decimal numbers separated by spaces",
+            )
+        if count is not None and len(values) != count:
+            self.fail(
+                f'{what}: {attribute}="{text}" needs {count} numbers, found {len(values)}',
+                element,
+            )
+        if any(math.isnan(value) for value in values):
+            self.fail(f'{what}: {attribute}="{text}" contains NaN', element)
+        return values
+
+    def origin(self, parent, what: str) -> tuple[np.ndarray, np.ndarray]:
+        origin = parent.find("origin")
+        if origin is None:
+            return np.zeros(3), np.zeros(3)
+        xyz = self.floats(origin, "xyz", 3, f"{what} <origin>", default=(0.0, 0.0, 0.0))
+        rpy = self.floats(origin, "rpy", 3, f"{what} <origin>", default=(0.0, 0.0, 0.0))
+        return np.array(xyz), np.array(rpy)
+
+    def rgba(self, material, what: str):
+        color = material.find("color")
+        if color is None:
+            return None
+        return self.floats(color, "rgba", 4, f"{what} <color>")
+
+    def geometry(self, shape, what: str) -> Geometry | None:
+        geometry = shape.find("geometry")
+        if geometry is None:
+            return None
+        children = [child for child in geometry if isinstance(child.tag, str)]
+        if not children:
+            self.fail(
+                f"{what} <geometry> is empty", geometry, hint="add a box, cylinder, sphere or mesh"
+            )
+        child = children[0]
+        kind = child.tag
+        where = f"{what} <{kind}>"
+        if kind == "box":
+            return Geometry(kind, child.sourceline, self.floats(child, "size", 3, where))
+        if kind in ("cylinder", "capsule"):
+            radius = self.floats(child, "radius", 1, where)[0]
+            length = self.floats(child, "length", 1, where)[0]
+            return Geometry(kind, child.sourceline, (radius, length))
+        if kind == "sphere":
+            return Geometry(kind, child.sourceline, self.floats(child, "radius", 1, where))
+        if kind == "mesh":
+            filename = child.get("filename")
+            if not filename:
+                self.fail(f"{where} has no 'filename' attribute", child)
+            scale = self.floats(child, "scale", 3, where, default=(1.0, 1.0, 1.0))
+            return Geometry(kind, child.sourceline, (), filename, scale)
+        self.fail(
+            f"{what}: unknown geometry <{kind}>",
+            child,
+            hint="use box, cylinder, sphere or mesh",
+        )
+        return None
+
+    def shape(self, element, what: str) -> Shape:
+        xyz, rpy = self.origin(element, what)
+        shape = Shape(element.sourceline, self.geometry(element, what), xyz, rpy)
+        material = element.find("material")
+        if material is not None:
+            shape.material = material.get("name")
+            shape.material_line = material.sourceline
+            shape.rgba = self.rgba(material, f"{what} <material>")
+        return shape
+
+    def inertial(self, element, what: str) -> Inertial:
+        xyz, rpy = self.origin(element, f"{what} <inertial>")
+        result = Inertial(element.sourceline, None, None, xyz, rpy)
+        mass = element.find("mass")
+        if mass is not None:
+            result.mass = self.floats(mass, "value", 1, f"{what} <mass>")[0]
+            result.mass_line = mass.sourceline
+        inertia = element.find("inertia")
+        if inertia is not None:
+            names = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
+            values = {
+                name: self.floats(inertia, name, 1, f"{what} <inertia>", default=(0.0,))[0]
+                for name in names
+            }
+            result.inertia = np.array(
+                [
+                    [values["ixx"], values["ixy"], values["ixz"]],
+                    [values["ixy"], values["iyy"], values["iyz"]],
+                    [values["ixz"], values["iyz"], values["izz"]],
+                ]
+            )
+            result.inertia_line = inertia.sourceline
+        return result
+
+    def link(self, element) -> Link:
+        name = element.get("name")
+        if not name:
+            self.fail("<link> has no name", element, hint='add name="..."')
+        what = f"link '{name}'"
+        link = Link(name, element.sourceline)
+        for index, visual in enumerate(element.iterchildren("visual")):
+            link.visuals.append(self.shape(visual, f"{what} <visual> #{index + 1}"))
+        for index, collision in enumerate(element.iterchildren("collision")):
+            link.collisions.append(self.shape(collision, f"{what} <collision> #{index + 1}"))
+        inertial = element.find("inertial")
+        if inertial is not None:
+            link.inertial = self.inertial(inertial, what)
+        return link
+
+    def joint(self, element) -> JointInfo:
+        name = element.get("name")
+        if not name:
+            self.fail("<joint> has no name", element, hint='add name="..."')
+        what = f"joint '{name}'"
+        kind = element.get("type")
+        if kind not in JOINT_TYPES:
+            self.fail(
+                f"{what} has type {kind!r}" if kind else f"{what} has no type",
+                element,
+                hint="use one of " + ", ".join(JOINT_TYPES),
+            )
+        ends = {}
+        for end in ("parent", "child"):
+            tag = element.find(end)
+            if tag is None or not tag.get("link"):
+                self.fail(
+                    f'{what} has no <{end} link="..."/>',
+                    tag if tag is not None else element,
+                    hint=f"every joint names its {end} link",
+                )
+            ends[end] = tag.get("link")
+        xyz, rpy = self.origin(element, what)
+        axis = np.array([1.0, 0.0, 0.0])
+        axis_element = element.find("axis")
+        if axis_element is not None:
+            axis = np.array(self.floats(axis_element, "xyz", 3, f"{what} <axis>", (1.0, 0.0, 0.0)))
+        limits: dict[str, float | None] = dict.fromkeys(("lower", "upper", "velocity", "effort"))
+        limit = element.find("limit")
+        if limit is not None:
+            for key in limits:
+                if limit.get(key) is not None:
+                    limits[key] = self.floats(limit, key, 1, f"{what} <limit>")[0]
+            if kind != "continuous":
+                limits["lower"] = 0.0 if limits["lower"] is None else limits["lower"]
+                limits["upper"] = 0.0 if limits["upper"] is None else limits["upper"]
+        return JointInfo(
+            name,
+            kind,
+            ends["parent"],
+            ends["child"],
+            axis,
+            xyz,
+            rpy,
+            limits["lower"],
+            limits["upper"],
+            limits["velocity"],
+            limits["effort"],
+            element.sourceline,
+        )
+
+
+def parse_urdf_text(text: str | bytes, path: Path | None = None) -> UrdfDocument:
+    """Parse URDF text into a :class:`UrdfDocument`.
+
+    Args:
+        text: The XML.
+        path: The file it came from, used in error messages and to resolve meshes.
+
+    Raises:
+        UrdfSyntaxError: Empty text, bad XML, no ``<robot>``, missing names, bad numbers.
+    """
+    reader = _Reader(path)
+    data = text.encode() if isinstance(text, str) else text
+    if not data.strip():
+        raise UrdfSyntaxError(
+            "the file is empty", path=path, hint='a URDF starts with <robot name="...">'
+        )
+    try:
+        root = etree.fromstring(data, etree.XMLParser(remove_blank_text=False, huge_tree=True))
+    except etree.XMLSyntaxError as error:
+        message = re.sub(r",? line \d+, column \d+", "", str(error.msg or error)).strip()
+        raise UrdfSyntaxError(
+            f"not well-formed XML: {message}",
+            path=path,
+            line=error.lineno,
+            hint="fix the XML syntax at that line",
+        ) from None
+    if root.tag != "robot":
+        raise UrdfSyntaxError(
+            f"the top element is <{root.tag}>, not <robot>",
+            path=path,
+            line=root.sourceline,
+            hint='a URDF file has one <robot name="..."> element around its links and joints',
+        )
+    name = root.get("name")
+    if not name:
+        reader.fail("<robot> has no name", root, hint='write <robot name="my_robot">')
+    materials: dict[str, Material] = {}
+    duplicates: list[Material] = []
+    for element in root.iterchildren("material"):
+        material_name = element.get("name")
+        if not material_name:
+            reader.fail("<material> has no name", element)
+        texture = element.find("texture")
+        material = Material(
+            material_name,
+            element.sourceline,
+            reader.rgba(element, f"material '{material_name}'"),
+            texture.get("filename") if texture is not None else None,
+        )
+        if material_name in materials:
+            duplicates.append(material)
+        else:
+            materials[material_name] = material
+    links = [reader.link(element) for element in root.iterchildren("link")]
+    joints = [reader.joint(element) for element in root.iterchildren("joint")]
+    # Materials defined inside a visual are usable by later links too.
+    for link in links:
+        for shape in link.visuals:
+            if shape.material and shape.rgba is not None and shape.material not in materials:
+                materials[shape.material] = Material(
+                    shape.material, shape.material_line, shape.rgba
+                )
+    return UrdfDocument(path, name, links, joints, materials, root, duplicates)
+
+
+def parse_urdf_file(path: str | Path) -> UrdfDocument:
+    """Read and parse a URDF file (see :func:`parse_urdf_text`)."""
+    path = Path(path)
+    try:
+        data = path.read_bytes()
+    except OSError as error:
+        raise ModelError(f"cannot read the file: {error.strerror}", path=path) from None
+    return parse_urdf_text(data, path)

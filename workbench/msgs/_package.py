@@ -1,0 +1,52 @@
+"""Per-package modules: ``from workbench.msgs.std_msgs import String``.
+
+Each package module is a few lines that hand their attribute lookups to
+:func:`package_getattr`, so classes are looked up in the type store on first
+use and importing a package module stays cheap.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+
+def package_members(package: str) -> dict[str, Any]:
+    """Name -> class for every message and service type of ``package``.
+
+    A service ``Spawn`` also exports ``SpawnRequest`` and ``SpawnResponse``, as rospy's
+    generated modules do.
+    """
+    from workbench.msgs._store import store
+
+    types = store()
+    members: dict[str, Any] = {}
+    for name, cls in types.classes.items():
+        if name.split("/")[0] == package:
+            members[cls.__name__] = cls
+    for name, service in types.services.items():
+        if name.split("/")[0] == package:
+            members[service.__name__] = service
+    return members
+
+
+def package_getattr(package: str) -> tuple[Callable[[str], Any], Callable[[], list[str]]]:
+    """The ``__getattr__`` and ``__dir__`` of the module ``workbench.msgs.<package>``."""
+
+    def __getattr__(name: str) -> Any:
+        members = package_members(package)
+        if name == "__all__":
+            return sorted(members)
+        if name in members:
+            return members[name]
+        if name.startswith("__"):
+            raise AttributeError(name)
+        from workbench.msgs import get_type
+
+        get_type(f"{package}/{name}")  # raises the "unknown type, did you mean" error
+        raise AttributeError(name)  # pragma: no cover - get_type raised
+
+    def __dir__() -> list[str]:
+        return sorted(package_members(package))
+
+    return __getattr__, __dir__

@@ -1,0 +1,59 @@
+"""Execute a planned trajectory in a ``workbench.sim`` World and report how well it was tracked.
+
+The World holds the robot (root welded at the origin, as in planning), the
+planning scene's obstacles and the joint-level controller named in
+``planning.yaml`` (setup step 10). The robot starts at rest at the plan's
+start, the controller follows the timed trajectory, and ``/joint_states``
+is published when a bus is given. The World has no ground: the plan was
+checked against the planning scene only, so the simulation holds the same
+obstacles.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from workbench.planning.output import trajectory_samples
+
+
+def execute(
+    planner, result, *, bus: Any = None, time_step: float = 0.001, settle_time: float = 0.5
+):
+    """Track ``result``'s trajectory in simulation.
+
+    Args:
+        planner: The :class:`~workbench.planning.pipeline.MotionPlanner` that planned it.
+        result: The :class:`~workbench.planning.pipeline.PlanResult`.
+        bus: A ``workbench.bus.Bus`` for ``/joint_states`` and ``/clock``, or None.
+        time_step: Simulation step, s.
+        settle_time: Simulated time after the end of the motion, s.
+
+    Returns:
+        The World's ``TrackingReport`` (max, RMS and final error per joint).
+    """
+    from pydrake.math import RigidTransform
+
+    from workbench.sim import World
+
+    controller = planner.config.controller or {}
+    world = World(time_step=time_step, bus=bus, ground=False)
+    robot = world.add_robot(
+        planner.config.robot,
+        controller=controller.get("type", "inverse_dynamics"),
+        gains=controller.get("gains"),
+    )
+    for obj in planner.scene:
+        X_WO = RigidTransform(obj.X_WO)
+        if obj.type == "box":
+            world.add_box(obj.name, obj.size, X_WO)
+        elif obj.type == "sphere":
+            world.add_sphere(obj.name, obj.radius, X_WO)
+        elif obj.type == "cylinder":
+            world.add_cylinder(obj.name, obj.radius, obj.length, X_WO)
+        else:
+            world.add_mesh(obj.name, obj.filename, X_WO, scale=obj.scale)
+    world.build()
+    world.set_positions(robot.name, planner.joints.full(result.start))
+    return world.track_trajectory(
+        robot.name, trajectory_samples(result.trajectory), settle_time=settle_time
+    )

@@ -1,0 +1,346 @@
+"""A planning scene: static obstacles (box, sphere, cylinder, mesh) posed in the world frame.
+
+A scene comes from Python (:meth:`PlanningScene.add_box` and friends) or from a
+YAML file such as ``planning/scenes/table.yaml``::
+
+    objects:
+      - name: table
+        type: box
+        size: [0.8, 0.6, 0.04]          # x, y, z extents, metres
+        pose: {xyz: [0.5, 0.0, 0.2], rpy: [0, 0, 0]}
+      - name: ball
+        type: sphere
+        radius: 0.05
+        pose: {xyz: [0.3, 0.2, 0.5]}
+      - name: post
+        type: cylinder                  # axis along the object's z
+        radius: 0.03
+        length: 0.4
+        pose: {xyz: [0.4, -0.3, 0.2]}
+      - name: part
+        type: mesh
+        filename: part.obj              # relative to the YAML file
+        scale: 1.0
+
+A bare list of objects is accepted too. Poses are in the world frame (REP 103:
+metres, radians, fixed-axis roll-pitch-yaw). Nothing here imports pydrake.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import yaml
+
+from workbench.planning.errors import SceneError
+
+#: The object types a scene may hold and the size fields each needs.
+SIZE_FIELDS: dict[str, tuple[str, ...]] = {
+    "box": ("size",),
+    "sphere": ("radius",),
+    "cylinder": ("radius", "length"),
+    "mesh": ("filename",),
+}
+
+
+def rpy_to_matrix(rpy: np.ndarray) -> np.ndarray:
+    """Rotation matrix of fixed-axis roll, pitch, yaw (URDF convention), radians."""
+    r, p, y = (float(v) for v in rpy)
+    cr, sr, cp, sp, cy, sy = (
+        math.cos(r),
+        math.sin(r),
+        math.cos(p),
+        math.sin(p),
+        math.cos(y),
+        math.sin(y),
+    )
+    return np.array(
+        [
+            [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+            [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+            [-sp, cp * sr, cp * cr],
+        ]
+    )
+
+
+@dataclass
+class SceneObject:
+    """One static obstacle.
+
+    Attributes:
+        name: Unique name (shown in collision messages and the viewer).
+        type: ``box``, ``sphere``, ``cylinder`` or ``mesh``.
+        size: Box extents (x, y, z) in metres; unused otherwise.
+        radius: Sphere or cylinder radius, metres.
+        length: Cylinder length along its z axis, metres.
+        filename: Mesh file (OBJ, STL, ...) for ``mesh``.
+        scale: Uniform mesh scale.
+        xyz: Position of the object frame in the world frame, metres.
+        rpy: Orientation of the object frame in the world frame, radians.
+    """
+
+    name: str
+    type: str
+    size: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    radius: float = 0.0
+    length: float = 0.0
+    filename: Path | None = None
+    scale: float = 1.0
+    xyz: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    rpy: np.ndarray = field(default_factory=lambda: np.zeros(3))
+
+    @property
+    def X_WO(self) -> np.ndarray:  # noqa: N802 (monogram notation)
+        """The object's pose in the world frame as a 4x4 homogeneous matrix."""
+        X = np.eye(4)
+        X[:3, :3] = rpy_to_matrix(self.rpy)
+        X[:3, 3] = self.xyz
+        return X
+
+    def half_extents(self) -> np.ndarray:
+        """Half extents of the object's bounding box in its own frame, metres."""
+        if self.type == "box":
+            return np.asarray(self.size, float) / 2
+        if self.type == "sphere":
+            return np.full(3, self.radius)
+        if self.type == "cylinder":
+            return np.array([self.radius, self.radius, self.length / 2])
+        lo, hi = self.mesh_bounds()
+        return (hi - lo) / 2
+
+    def mesh_bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """Lower and upper corner of a mesh's vertices in the object frame (scaled), metres."""
+        import trimesh
+
+        mesh = trimesh.load(str(self.filename), force="mesh")
+        vertices = np.asarray(mesh.vertices, float) * self.scale
+        return vertices.min(axis=0), vertices.max(axis=0)
+
+
+class _LineLoader(yaml.SafeLoader):
+    """A YAML loader that records the 1-based line of every mapping under ``__line__``."""
+
+
+def _construct_mapping(loader: _LineLoader, node: yaml.MappingNode) -> dict[str, Any]:
+    mapping = loader.construct_mapping(node, deep=True)
+    mapping["__line__"] = node.start_mark.line + 1
+    return mapping
+
+
+_LineLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_mapping)
+
+
+class PlanningScene:
+    """The obstacles around the robot, all fixed in the world frame."""
+
+    def __init__(self, objects: list[SceneObject] | None = None, *, source: Path | None = None):
+        self.objects: list[SceneObject] = []
+        self.source = source
+        for obj in objects or []:
+            self.add(obj)
+
+    def __len__(self) -> int:
+        return len(self.objects)
+
+    def __iter__(self):
+        return iter(self.objects)
+
+    def names(self) -> list[str]:
+        """The object names in insertion order."""
+        return [obj.name for obj in self.objects]
+
+    def add(self, obj: SceneObject) -> SceneObject:
+        """Add an object after validating its type, sizes and name."""
+        _validate(obj)
+        if obj.name in self.names():
+            raise SceneError(
+                f"the scene already has an object named '{obj.name}'", hint="rename it"
+            )
+        self.objects.append(obj)
+        return obj
+
+    def add_box(self, name: str, size, xyz=(0, 0, 0), rpy=(0, 0, 0)) -> SceneObject:
+        """Add a box with extents ``size`` (x, y, z) in metres, centred at its frame."""
+        return self.add(SceneObject(name, "box", size=_vec(size), xyz=_vec(xyz), rpy=_vec(rpy)))
+
+    def add_sphere(self, name: str, radius: float, xyz=(0, 0, 0)) -> SceneObject:
+        """Add a sphere of ``radius`` metres centred at ``xyz``."""
+        return self.add(SceneObject(name, "sphere", radius=float(radius), xyz=_vec(xyz)))
+
+    def add_cylinder(
+        self, name: str, radius: float, length: float, xyz=(0, 0, 0), rpy=(0, 0, 0)
+    ) -> SceneObject:
+        """Add a cylinder (axis along its z, centred at its frame), metres."""
+        return self.add(
+            SceneObject(
+                name,
+                "cylinder",
+                radius=float(radius),
+                length=float(length),
+                xyz=_vec(xyz),
+                rpy=_vec(rpy),
+            )
+        )
+
+    def add_mesh(
+        self,
+        name: str,
+        filename: str | os.PathLike[str],
+        scale: float = 1.0,
+        xyz=(0, 0, 0),
+        rpy=(0, 0, 0),
+    ) -> SceneObject:
+        """Add a mesh obstacle read from ``filename`` (OBJ, STL ...), scaled uniformly."""
+        return self.add(
+            SceneObject(
+                name,
+                "mesh",
+                filename=Path(filename),
+                scale=float(scale),
+                xyz=_vec(xyz),
+                rpy=_vec(rpy),
+            )
+        )
+
+    def to_dict(self) -> dict[str, Any]:
+        """The scene in the YAML layout (for writing back)."""
+        out = []
+        for obj in self.objects:
+            item: dict[str, Any] = {"name": obj.name, "type": obj.type}
+            if obj.type == "box":
+                item["size"] = [float(v) for v in obj.size]
+            if obj.type in ("sphere", "cylinder"):
+                item["radius"] = obj.radius
+            if obj.type == "cylinder":
+                item["length"] = obj.length
+            if obj.type == "mesh":
+                item["filename"] = str(obj.filename)
+                item["scale"] = obj.scale
+            item["pose"] = {"xyz": [float(v) for v in obj.xyz], "rpy": [float(v) for v in obj.rpy]}
+            out.append(item)
+        return {"objects": out}
+
+
+def _vec(value, n: int = 3) -> np.ndarray:
+    array = np.asarray(value, dtype=float).reshape(-1)
+    if array.shape != (n,):
+        raise ValueError(f"expected {n} numbers, got {len(array)}")
+    return array
+
+
+def _validate(obj: SceneObject) -> None:
+    if not obj.name or not isinstance(obj.name, str):
+        raise SceneError("a scene object needs a non-empty 'name'")
+    if obj.type not in SIZE_FIELDS:
+        raise SceneError(
+            f"object '{obj.name}' has unknown type '{obj.type}'",
+            hint=f"use one of {', '.join(SIZE_FIELDS)}",
+        )
+    if obj.type == "box" and not (np.all(np.isfinite(obj.size)) and np.all(obj.size > 0)):
+        raise SceneError(f"box '{obj.name}' needs three positive sizes, got {list(obj.size)}")
+    if obj.type in ("sphere", "cylinder") and not (math.isfinite(obj.radius) and obj.radius > 0):
+        raise SceneError(f"{obj.type} '{obj.name}' needs a positive radius, got {obj.radius}")
+    if obj.type == "cylinder" and not (math.isfinite(obj.length) and obj.length > 0):
+        raise SceneError(f"cylinder '{obj.name}' needs a positive length, got {obj.length}")
+    if obj.type == "mesh":
+        if obj.filename is None or not Path(obj.filename).is_file():
+            raise SceneError(f"mesh '{obj.name}': file '{obj.filename}' not found")
+        if not obj.scale > 0:
+            raise SceneError(f"mesh '{obj.name}' needs a positive scale, got {obj.scale}")
+    if not (np.all(np.isfinite(obj.xyz)) and np.all(np.isfinite(obj.rpy))):
+        raise SceneError(f"object '{obj.name}' has a non-finite pose")
+
+
+def load_scene(path: str | os.PathLike[str]) -> PlanningScene:
+    """Read a scene YAML file (see the module docstring for the layout).
+
+    Raises:
+        SceneError: naming the file and line of the first bad object.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise SceneError(f"scene file '{path}' not found", hint="give a path to a .yaml scene")
+    try:
+        data = yaml.load(path.read_text(), Loader=_LineLoader)  # noqa: S506 (SafeLoader subclass)
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        line = mark.line + 1 if mark is not None else None
+        raise SceneError(
+            f"not valid YAML: {getattr(exc, 'problem', exc)}", path=path, line=line
+        ) from None
+    if data is None:
+        return PlanningScene(source=path)
+    if isinstance(data, dict):
+        if "objects" not in data:
+            raise SceneError(
+                "expected a list of objects or a mapping with 'objects'",
+                path=path,
+                line=data["__line__"],
+            )
+        data = data["objects"] or []
+    if not isinstance(data, list):
+        raise SceneError("expected a list of objects", path=path, line=1)
+    scene = PlanningScene(source=path)
+    for item in data:
+        line = item.get("__line__") if isinstance(item, dict) else None
+        try:
+            scene.add(_object_from_dict(item, path.parent))
+        except SceneError as exc:
+            raise SceneError(exc.message, path=path, line=line, hint=exc.hint) from None
+        except (TypeError, ValueError) as exc:
+            name = item.get("name", "?") if isinstance(item, dict) else "?"
+            raise SceneError(f"object '{name}': {exc}", path=path, line=line) from None
+    return scene
+
+
+def _object_from_dict(item: Any, base_dir: Path) -> SceneObject:
+    if not isinstance(item, dict):
+        raise SceneError(f"each object must be a mapping with name and type, got {item!r}")
+    item = {k: v for k, v in item.items() if k != "__line__"}
+    name = item.pop("name", None)
+    if not isinstance(name, str) or not name:
+        raise SceneError("an object has no 'name'")
+    kind = item.pop("type", None)
+    if kind not in SIZE_FIELDS:
+        raise SceneError(
+            f"object '{name}' has unknown type '{kind}'",
+            hint=f"use one of {', '.join(SIZE_FIELDS)}",
+        )
+    missing = [f for f in SIZE_FIELDS[kind] if f not in item]
+    if missing:
+        raise SceneError(f"{kind} '{name}' needs the field(s) {', '.join(missing)}")
+    pose = item.pop("pose", {}) or {}
+    if not isinstance(pose, dict):
+        raise SceneError(f"object '{name}': 'pose' must be a mapping with xyz and rpy")
+    pose = {k: v for k, v in pose.items() if k != "__line__"}
+    unknown_pose = set(pose) - {"xyz", "rpy"}
+    if unknown_pose:
+        raise SceneError(
+            f"object '{name}': unknown pose field(s) {sorted(unknown_pose)}", hint="use xyz and rpy"
+        )
+    obj = SceneObject(
+        name, kind, xyz=_vec(pose.get("xyz", (0, 0, 0))), rpy=_vec(pose.get("rpy", (0, 0, 0)))
+    )
+    allowed = set(SIZE_FIELDS[kind]) | ({"scale"} if kind == "mesh" else set())
+    unknown = set(item) - allowed
+    if unknown:
+        raise SceneError(
+            f"{kind} '{name}' has unknown field(s) {sorted(unknown)}",
+            hint=f"a {kind} takes {', '.join(sorted(allowed))} and pose",
+        )
+    if kind == "box":
+        obj.size = _vec(item["size"])
+    if kind in ("sphere", "cylinder"):
+        obj.radius = float(item["radius"])
+    if kind == "cylinder":
+        obj.length = float(item["length"])
+    if kind == "mesh":
+        filename = Path(str(item["filename"]))
+        obj.filename = filename if filename.is_absolute() else base_dir / filename
+        obj.scale = float(item.get("scale", 1.0))
+    return obj

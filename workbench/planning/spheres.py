@@ -1,0 +1,458 @@
+"""A sphere model of the robot, checked against the scene in numpy for many configurations at once.
+
+Planning spends nearly all its time asking "is this configuration free?".
+:class:`SphereChecker` answers it for a whole batch (every step of an edge) in
+a few vectorised numpy operations:
+
+* every collision shape of every robot body is covered by spheres (boxes and
+  cylinders by a grid of cells, each enclosed by a sphere; meshes — which Drake
+  checks as their convex hulls — by k-means clusters of the hull's vertices and
+  surface samples, each sphere enclosing its cluster plus the sample spacing),
+  so the model over-approximates the robot;
+* forward kinematics of the planning group's joints is evaluated for all
+  configurations at once (4x4 transforms, batch on the first axis);
+* spheres are tested against the scene's primitives (sphere, box, cylinder;
+  meshes by their bounding box) and against each other for the body pairs
+  the exact checker does not filter (SRDF disabled pairs, adjacent and welded
+  bodies, and pairs whose relative pose the group's joints cannot change).
+
+Because the spheres cover the geometry, a configuration the sphere model
+accepts is free for the exact geometry too; the planner still re-checks the
+final trajectory with Drake's exact checker before returning it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from workbench.planning.collision import CollisionWorld, JointMap
+from workbench.planning.obstacles import ObstacleSet
+from workbench.planning.sphere_cover import cover_shape, load_sphere_model  # noqa: F401
+
+
+def _transform(rigid) -> np.ndarray:
+    return np.asarray(rigid.GetAsMatrix4(), float)
+
+
+class SphereChecker:
+    """Vectorised collision checks of a planning group's configurations with a sphere model.
+
+    Args:
+        world: The exact collision world (its plant, filters and obstacles are reused).
+        joints: The planning group and the values of the joints outside it.
+        padding: Extra radius added to every sphere, metres.
+        seed: Seed of the mesh clustering.
+        sphere_model: Spheres per link (see :func:`load_sphere_model`) to use instead of
+            covering those links' geometry.
+    """
+
+    def __init__(
+        self,
+        world: CollisionWorld,
+        joints: JointMap,
+        *,
+        padding: float = 0.0,
+        seed: int = 0,
+        sphere_model: dict[str, tuple[np.ndarray, np.ndarray]] | None = None,
+    ):
+        self.world = world
+        self.joints = joints
+        plant = world.plant
+        context = plant.CreateDefaultContext()
+        plant.SetPositions(context, joints.base)
+        group_joints = {
+            plant.GetJointByName(n, world.instance).index(): i for i, n in enumerate(joints.names)
+        }
+
+        # Bodies in topological order with their parent and the joint between.
+        order, parent_of, joint_of = [plant.world_body().index()], {}, {}
+        children: dict = {}
+        for j in plant.GetJointIndices():
+            joint = plant.get_joint(j)
+            children.setdefault(joint.parent_body().index(), []).append(joint)
+        queue = [plant.world_body().index()]
+        while queue:
+            b = queue.pop(0)
+            for joint in children.get(b, []):
+                c = joint.child_body().index()
+                parent_of[c], joint_of[c] = b, joint
+                order.append(c)
+                queue.append(c)
+        # Only joints of the group get a slot of their own: a body attached by a fixed
+        # (or held) joint rides in its parent's slot with a constant offset.
+        # X_PC(q) = X_PF R(q) X_MC = M0 + sin(q) M1 + (1 - cos(q)) M2 (Rodrigues), so each
+        # step is one product of the coefficients with a (3, 16) stack.
+        self._steps = []  # (child slot, parent slot, group index, (3, 16) stack)
+        slot = {plant.world_body().index(): 0}
+        offset = {plant.world_body().index(): np.eye(4)}  # X_slot_body
+        depends: dict = {plant.world_body().index(): frozenset()}
+        self._prismatic = np.zeros(len(joints.names), dtype=bool)
+        for b in order[1:]:
+            joint, p = joint_of[b], parent_of[b]
+            gi = group_joints.get(joint.index())
+            if gi is None:
+                X_PC = _transform(
+                    plant.CalcRelativeTransform(
+                        context, plant.get_body(p).body_frame(), plant.get_body(b).body_frame()
+                    )
+                )
+                slot[b], offset[b], depends[b] = slot[p], offset[p] @ X_PC, depends[p]
+                continue
+            X_PF = offset[p] @ _transform(joint.frame_on_parent().GetFixedPoseInBodyFrame())
+            X_MC = np.linalg.inv(_transform(joint.frame_on_child().GetFixedPoseInBodyFrame()))
+            kind = type(joint).__name__
+            if kind == "RevoluteJoint":
+                x, y, z = np.asarray(joint.revolute_axis(), float) / np.linalg.norm(
+                    joint.revolute_axis()
+                )
+                K = np.zeros((4, 4))
+                K[:3, :3] = [[0, -z, y], [z, 0, -x], [-y, x, 0]]
+                stack = [X_PF @ X_MC, X_PF @ K @ X_MC, X_PF @ K @ K @ X_MC]
+            elif kind == "PrismaticJoint":
+                axis = np.asarray(joint.translation_axis(), float)
+                T = np.zeros((4, 4))
+                T[:3, 3] = axis / np.linalg.norm(axis)
+                stack = [X_PF @ X_MC, X_PF @ T @ X_MC, np.zeros((4, 4))]
+                self._prismatic[gi] = True
+            else:
+                raise TypeError(f"joint '{joint.name()}' of type {kind} cannot be planned")
+            slot[b] = len(self._steps) + 1
+            offset[b] = np.eye(4)
+            depends[b] = depends[p] | {gi}
+            self._steps.append((slot[b], slot[p], gi, np.array(stack).reshape(3, 16)))
+        self._num_slots = len(self._steps) + 1
+        self._offset_by_name = {plant.get_body(b).name(): offset[b] for b in slot}
+        self._slot_by_name = {plant.get_body(b).name(): k for b, k in slot.items()}
+
+        # Spheres per robot body.
+        inspector = world.scene_graph.model_inspector()
+        centres, radii, owner = [], [], []
+        robot_bodies = [plant.get_body(b) for b in plant.GetBodyIndices(world.instance)]
+        for body in robot_bodies:
+            if sphere_model and body.name() in sphere_model:
+                c, r = sphere_model[body.name()]
+                X_SB = offset[body.index()]
+                centres.append(np.asarray(c, float) @ X_SB[:3, :3].T + X_SB[:3, 3])
+                radii.append(np.asarray(r, float) + padding)
+                owner += [body.index()] * len(r)
+                continue
+            for gid in plant.GetCollisionGeometriesForBody(body):
+                c, r = cover_shape(inspector.GetShape(gid))
+                X_BG = offset[body.index()] @ _transform(inspector.GetPoseInFrame(gid))
+                centres.append(c @ X_BG[:3, :3].T + X_BG[:3, 3])
+                radii.append(r + padding)
+                owner += [body.index()] * len(r)
+        self.local = np.vstack(centres) if centres else np.zeros((0, 3))
+        self._local_h = np.hstack([self.local, np.ones((len(self.local), 1))])[:, :, None]
+        self.radii = np.concatenate(radii) if radii else np.zeros(0)
+        self.owner_slot = np.array([slot[b] for b in owner], dtype=int)
+        depends_of = {int(b): depends[b] for b in slot}
+        owner = np.array([int(b) for b in owner], dtype=int)
+
+        # Spheres that move with the group check the environment.
+        moving = np.array([bool(depends_of[b]) for b in owner], dtype=bool)
+        self.env_spheres = np.nonzero(moving)[0] if len(owner) else np.zeros(0, int)
+
+        # Self pairs: robot body pairs not filtered whose relative pose the group changes.
+        filtered = world.checker.GetFilteredCollisionMatrix()
+        pairs_a, pairs_b = [], []
+        body_ids = sorted(set(owner.tolist()))
+        for i, a in enumerate(body_ids):
+            for b in body_ids[i + 1 :]:
+                if filtered[int(a), int(b)] != 0:
+                    continue
+                # bodies with the same group joints above them never move relative to
+                # each other: their pair cannot change during planning
+                if depends_of[a] == depends_of[b]:
+                    continue
+                sa, sb = np.nonzero(owner == a)[0], np.nonzero(owner == b)[0]
+                pa, pb = np.meshgrid(sa, sb, indexing="ij")
+                pairs_a.append(pa.ravel())
+                pairs_b.append(pb.ravel())
+        self.pair_a = np.concatenate(pairs_a) if pairs_a else np.zeros(0, int)
+        self.pair_b = np.concatenate(pairs_b) if pairs_b else np.zeros(0, int)
+        self.pair_r2 = (self.radii[self.pair_a] + self.radii[self.pair_b]) ** 2
+        self.obstacles = ObstacleSet(world)
+        self.checks = 0
+        self._slot_depends = {slot[b]: depends[b] for b in slot}
+        self._slot_bodies: dict[int, list[str]] = {}
+        for b, k in slot.items():
+            if b != plant.world_body().index():
+                self._slot_bodies.setdefault(k, []).append(plant.get_body(b).name())
+        self._build_hierarchy(moving)
+        self._grids: dict[int, tuple] = {}
+        self._build_pair_grids(seed)
+        self._grid_list = list(self._grids.values())
+        self._sphere_pairs = np.array(
+            [k for k in range(len(self._bp_a)) if k not in self._grids], dtype=int
+        )
+        self._build_field(seed)
+
+    def _build_field(self, seed: int, spacing: float = 0.02) -> None:
+        """The obstacles' distance table over the region the robot's spheres can reach."""
+        if not self.obstacles.any or not len(self.env_spheres):
+            return
+        rng = np.random.default_rng(seed)
+        lower, upper = self.world.position_limits()
+        lo = np.where(np.isfinite(lower), lower, -np.pi)[self.joints.indices]
+        hi = np.where(np.isfinite(upper), upper, np.pi)[self.joints.indices]
+        centres = self.sphere_centres(rng.uniform(lo, hi, size=(256, len(lo))))[:, self.env_spheres]
+        reach = float(self.radii[self.env_spheres].max()) + 0.1
+        box_lo = centres.reshape(-1, 3).min(axis=0) - reach
+        box_hi = centres.reshape(-1, 3).max(axis=0) + reach
+        self.obstacles.build_field(box_lo, box_hi, spacing)
+
+    def _build_pair_grids(self, seed: int, samples: int = 200, grid_step: float = 0.05) -> None:
+        """Exact distance tables for body pairs the spheres cannot resolve.
+
+        Some bodies sit so close to each other (the Panda's wrist and hand) that any
+        covering spheres overlap although the geometry does not. When such a pair's
+        relative pose depends on at most two of the group's joints, the exact signed
+        distance is tabulated over those joints every ``grid_step`` rad; a flagged
+        configuration is then free for that pair when the nearest table entry exceeds
+        what the joints' half-step can change it by. Tables depend on the robot only
+        and are cached per process.
+        """
+        if not len(self._bp_a):
+            return
+        rng = np.random.default_rng(seed)
+        lower, upper = self.world.position_limits()
+        lo = np.where(np.isfinite(lower), lower, -np.pi)[self.joints.indices]
+        hi = np.where(np.isfinite(upper), upper, np.pi)[self.joints.indices]
+        Q = rng.uniform(lo, hi, size=(samples, len(lo)))
+        X = self.body_transforms(Q)[:, :, :3, :].reshape(len(Q), -1, 4)
+        centres = (X @ self._local_T).reshape(len(Q), -1)[:, self._centre_index]
+        for k, (a_ids, b_ids, reach) in enumerate(self._bp_spheres):
+            sa, sb = int(self.owner_slot[a_ids[0]]), int(self.owner_slot[b_ids[0]])
+            between = sorted(self._slot_depends[sa] ^ self._slot_depends[sb])
+            if not 1 <= len(between) <= 2:
+                continue
+            ca, cb = centres[:, a_ids], centres[:, b_ids]
+            d2 = ((ca[:, :, None] - cb[:, None]) ** 2).sum(-1)
+            if (d2 < reach).any(axis=(1, 2)).mean() < 0.2:
+                continue
+            key = (str(self.world.robot_path), tuple(self.joints.names), sa, sb, grid_step)
+            if key not in _PAIR_GRIDS:
+                _PAIR_GRIDS[key] = self._pair_grid(sa, sb, between, lo, hi, grid_step)
+            self._grids[k] = _PAIR_GRIDS[key]
+
+    def _pair_grid(self, sa: int, sb: int, between: list[int], lo, hi, step: float):
+        names_a, names_b = set(self._slot_bodies[sa]), set(self._slot_bodies[sb])
+        plant = self.world.plant
+        axes = [np.arange(lo[j], hi[j] + step, step) for j in between]
+        shape = tuple(len(a) for a in axes)
+        table = np.full(shape, np.inf)
+        base = self.joints.group(self.joints.base).copy()
+        influence = 0.1
+        for index in np.ndindex(shape):
+            q = base.copy()
+            for axis, j, i in zip(axes, between, index, strict=True):
+                q[j] = axis[i]
+            clearance = self.world.checker.CalcRobotClearance(self.joints.full(q), influence)
+            for a, b, dist in zip(
+                clearance.robot_indices(),
+                clearance.other_indices(),
+                clearance.distances(),
+                strict=True,
+            ):
+                na, nb = plant.get_body(a).name(), plant.get_body(b).name()
+                if (na in names_a and nb in names_b) or (na in names_b and nb in names_a):
+                    table[index] = min(table[index], dist)
+        # How far the pair's closest points can move while each joint moves half a step.
+        reach = 0.0
+        for j in between:
+            points = self._slot_points(sa) if j in self._slot_depends[sa] else self._slot_points(sb)
+            reach += self._lever(j, points) * step / 2
+        return np.array(between), np.array([a[0] for a in axes]), step, table, reach
+
+    def _slot_points(self, slot: int) -> np.ndarray:
+        return np.nonzero(self.owner_slot == slot)[0]
+
+    def _lever(self, joint: int, spheres: np.ndarray) -> float:
+        """Largest distance of a sphere's surface from ``joint``'s axis, over many poses, m."""
+        rng = np.random.default_rng(1)
+        lower, upper = self.world.position_limits()
+        lo = np.where(np.isfinite(lower), lower, -np.pi)[self.joints.indices]
+        hi = np.where(np.isfinite(upper), upper, np.pi)[self.joints.indices]
+        Q = rng.uniform(lo, hi, size=(32, len(lo)))
+        X = self.body_transforms(Q)
+        child = next(c for c, _, gi, _ in self._steps if gi == joint)
+        centres = self.sphere_centres(Q)[:, spheres]
+        origin = X[:, child, :3, 3][:, None, :]
+        # a conservative lever: distance to the joint's origin (not just its axis)
+        return float(np.max(np.linalg.norm(centres - origin, axis=-1) + self.radii[spheres]))
+
+    def _build_hierarchy(self, moving: np.ndarray) -> None:
+        """One bounding sphere per body, and padded index tables from bodies to their spheres.
+
+        Checks test bounding spheres first and look at a body's own spheres only where its
+        bounding sphere touches an obstacle or another body's bounding sphere.
+        """
+        slots = np.unique(self.owner_slot)
+        members = [np.nonzero(self.owner_slot == slot)[0] for slot in slots]
+        width = max((len(m) for m in members), default=1)
+        self._b_slot = slots
+        self._b_members = np.zeros((len(slots), width), dtype=int)
+        self._b_mask = np.zeros((len(slots), width), dtype=bool)
+        centres, radii = [], []
+        for k, m in enumerate(members):
+            self._b_members[k, : len(m)] = m
+            self._b_mask[k, : len(m)] = True
+            local = self.local[m]
+            centre = (local.min(axis=0) + local.max(axis=0)) / 2
+            centres.append(centre)
+            radii.append(float(np.max(np.linalg.norm(local - centre, axis=1) + self.radii[m])))
+        self._b_local_h = np.hstack([np.array(centres), np.ones((len(slots), 1))])[:, :, None]
+        self._b_r = np.array(radii)
+        self._b_env = np.array([k for k, m in enumerate(members) if moving[m[0]]], dtype=int)
+        # Body pairs that need checking, each with its sphere pairs (padded).
+        body_of = {slot: k for k, slot in enumerate(slots)}
+        grouped: dict[tuple[int, int], list[int]] = {}
+        for i, (a, b) in enumerate(zip(self.pair_a, self.pair_b, strict=True)):
+            key = (body_of[self.owner_slot[a]], body_of[self.owner_slot[b]])
+            grouped.setdefault(key, []).append(i)
+        keys = list(grouped)
+        self._bp_a = np.array([k[0] for k in keys], dtype=int)
+        self._bp_b = np.array([k[1] for k in keys], dtype=int)
+        self._bp_reach2 = (self._b_r[self._bp_a] + self._b_r[self._bp_b]) ** 2
+        order = np.concatenate([np.array(grouped[key], dtype=int) for key in keys]) if keys else []
+        self._sp_a = self.pair_a[order] if len(order) else np.zeros(0, int)
+        self._sp_b = self.pair_b[order] if len(order) else np.zeros(0, int)
+        self._sp_r2 = self.pair_r2[order] if len(order) else np.zeros(0)
+        self._sp_count = np.array([len(grouped[key]) for key in keys], dtype=int)
+        # Per body pair: the two bodies' sphere indices and the squared reach of every pair
+        # (pairs not to be checked get -1, which never hits).
+        self._bp_spheres = []
+        for key in keys:
+            idx = np.array(grouped[key], dtype=int)
+            a_ids, b_ids = np.unique(self.pair_a[idx]), np.unique(self.pair_b[idx])
+            reach = np.full((len(a_ids), len(b_ids)), -1.0)
+            ia = np.searchsorted(a_ids, self.pair_a[idx])
+            ib = np.searchsorted(b_ids, self.pair_b[idx])
+            reach[ia, ib] = self.pair_r2[idx]
+            self._bp_spheres.append((a_ids, b_ids, reach))
+        self._sp_start = np.concatenate([[0], np.cumsum(self._sp_count)[:-1]]).astype(int)
+        # Sphere centres of every slot in one product: rows 3*slot+i of X @ local_h.
+        S = len(self.radii)
+        self._centre_index = (3 * self.owner_slot[:, None] + np.arange(3)) * S + np.arange(S)[
+            :, None
+        ]
+        self._local_T = self._local_h[:, :, 0].T.copy()  # (4, S)
+        B = len(self._b_slot)
+        self._bound_index = (3 * self._b_slot[:, None] + np.arange(3)) * B + np.arange(B)[:, None]
+        self._bound_T = self._b_local_h[:, :, 0].T.copy()  # (4, B)
+
+    @property
+    def num_spheres(self) -> int:
+        """Number of spheres in the robot model."""
+        return len(self.radii)
+
+    def body_transforms(self, Q: np.ndarray) -> np.ndarray:
+        """World poses (N, slots, 4, 4) of the moving frames for group configurations ``Q`` (N, n).
+
+        Slot 0 is the world; each group joint's child body has a slot (see :meth:`body_pose`).
+        """
+        n = len(Q)
+        coef = np.empty((n, Q.shape[1], 3))
+        coef[..., 0] = 1.0
+        coef[..., 1] = np.where(self._prismatic, Q, np.sin(Q))
+        coef[..., 2] = np.where(self._prismatic, 0.0, 1.0 - np.cos(Q))
+        X = np.empty((n, self._num_slots, 4, 4))
+        X[:, 0] = np.eye(4)
+        for child, parent, gi, stack in self._steps:
+            X_PC = (coef[:, gi] @ stack).reshape(n, 4, 4)
+            X[:, child] = X_PC if parent == 0 else X[:, parent] @ X_PC
+        return X
+
+    def body_pose(self, X: np.ndarray, body_name: str) -> np.ndarray:
+        """A body's world poses (N, 4, 4) from :meth:`body_transforms`'s result."""
+        return X[:, self._slot_by_name[body_name]] @ self._offset_by_name[body_name]
+
+    def sphere_centres(self, Q: np.ndarray) -> np.ndarray:
+        """World centres (N, S, 3) of the robot's spheres."""
+        X = self.body_transforms(np.atleast_2d(Q))
+        Xs = X[:, self.owner_slot, :3, :]
+        return (Xs @ self._local_h)[..., 0]
+
+    def configs_free(self, Q: np.ndarray) -> np.ndarray:
+        """Which group configurations (rows of ``Q``) the sphere model finds free."""
+        Q = np.atleast_2d(np.asarray(Q, float))
+        n = len(Q)
+        self.checks += n
+        X = self.body_transforms(Q)[:, :, :3, :].reshape(n, -1, 4)  # (n, 3 * slots, 4)
+        centres = (X @ self._local_T).reshape(n, -1)[:, self._centre_index]  # (n, S, 3)
+        bounds = (X @ self._bound_T).reshape(n, -1)[:, self._bound_index]  # (n, B, 3)
+        bad = np.zeros(n, dtype=bool)
+        env = self.env_spheres
+        if len(env) and self.obstacles.any:
+            flat = centres[:, env].reshape(-1, 3)
+            radii = np.tile(self.radii[env], n)
+            candidates = np.nonzero(self.obstacles.near(flat, radii))[0]
+            if len(candidates):
+                hits = self.obstacles.hit(flat[candidates], radii[candidates])
+                bad[candidates[hits] // len(env)] = True
+        for between, origin, step, table, margin in self._grid_list:
+            # tabulated pairs: one lookup instead of their spheres
+            index = np.rint((Q[:, between] - origin) / step).astype(np.intp)
+            np.clip(index, 0, np.array(table.shape) - 1, out=index)
+            bad |= table[tuple(index.T)] <= margin
+        if len(self._sphere_pairs):
+            ks = self._sphere_pairs
+            d = bounds[:, self._bp_a[ks]] - bounds[:, self._bp_b[ks]]
+            close = (d * d).sum(axis=-1) < self._bp_reach2[ks]
+            close &= ~bad[:, None]
+            for c in np.nonzero(close.any(axis=0))[0]:
+                rows = np.nonzero(close[:, c])[0]
+                a_ids, b_ids, reach = self._bp_spheres[ks[c]]
+                ca = centres[rows][:, a_ids]
+                cb = centres[rows][:, b_ids]
+                d2 = (
+                    (ca * ca).sum(axis=-1)[:, :, None]
+                    + (cb * cb).sum(axis=-1)[:, None, :]
+                    - 2.0 * ca @ cb.transpose(0, 2, 1)
+                )
+                bad[rows[(d2 < reach).any(axis=(1, 2))]] = True
+        return ~bad
+
+    def is_free(self, q: np.ndarray) -> bool:
+        """One group configuration."""
+        return bool(self.configs_free(np.asarray(q, float)[None, :])[0])
+
+    def edge_samples(self, qa: np.ndarray, qb: np.ndarray, step: float) -> np.ndarray:
+        """Configurations on the segment qa→qb every ``step`` (max-norm), coarse to fine."""
+        qa, qb = np.asarray(qa, float), np.asarray(qb, float)
+        count = max(1, math.ceil(np.max(np.abs(qb - qa)) / step))
+        t = np.linspace(0.0, 1.0, count + 1)[_bisection_order(count + 1)]
+        return qa + (qb - qa) * t[:, None]
+
+
+_BISECTION_CACHE: dict[int, np.ndarray] = {}
+_PAIR_GRIDS: dict[tuple, tuple] = {}
+
+
+def _bisection_order(n: int) -> np.ndarray:
+    """Indices 0..n-1 ordered ends first, then midpoints of ever finer halvings."""
+    cached = _BISECTION_CACHE.get(n)
+    if cached is not None:
+        return cached
+    order, seen = [], set()
+    for i in (0, n - 1):
+        if i not in seen:
+            order.append(i)
+            seen.add(i)
+    level = 2
+    while len(order) < n:
+        for k in range(1, level, 2):
+            i = round(k * (n - 1) / level)
+            if i not in seen:
+                order.append(i)
+                seen.add(i)
+        level *= 2
+        if level > 4 * n:
+            order += [i for i in range(n) if i not in seen]
+            break
+    result = np.array(order[:n], dtype=int)
+    _BISECTION_CACHE[n] = result
+    return result

@@ -1,0 +1,207 @@
+"""Runnable nodes for ``workbench run`` and launch files.
+
+* ``tf/static_transform_publisher`` and ``tf2_ros/static_transform_publisher``:
+  ``x y z yaw pitch roll frame_id child_frame_id`` or ``x y z qx qy qz qw frame_id
+  child_frame_id`` (tf's form takes a trailing period in ms, ignored: the
+  transform is latched on ``/tf_static``).
+* ``robot_state_publisher/robot_state_publisher`` and
+  ``joint_state_publisher/joint_state_publisher`` (``_gui`` for sliders): the robot is
+  the private parameter ``~robot`` (a ``urdf/`` name or a path) or the XML in
+  ``robot_description``.
+
+The manual's own scripts (``learning_tf``, ``robot_setup_tf``) are not registered:
+the launcher finds them as scripts beside the launch file (``examples/tf``), so a
+student's edited copy next to their own launch file is the one that runs.
+:func:`run_lab_script` runs the shipped copies by name.
+"""
+
+from __future__ import annotations
+
+import math
+import runpy
+import sys
+import tempfile
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+from workbench.tf.exceptions import InvalidArgumentException
+
+#: learning_tf/robot_setup_tf node type -> script under examples/tf.
+LAB_SCRIPTS = {
+    "learning_tf/turtle_tf_broadcaster": "turtle_tf_broadcaster.py",
+    "learning_tf/turtle_tf_listener": "turtle_tf_listener.py",
+    "learning_tf/turtle_tf_listener_carrot": "turtle_tf_listener_carrot.py",
+    "learning_tf/turtle_tf_listener_time_travel": "turtle_tf_listener_time_travel.py",
+    "learning_tf/turtle_tf_listener_time_travel_full": "turtle_tf_listener_time_travel_full.py",
+    "learning_tf/fixed_tf_broadcaster": "fixed_tf_broadcaster.py",
+    "learning_tf/dynamic_tf_broadcaster": "dynamic_tf_broadcaster.py",
+    "robot_setup_tf/tf_broadcaster": "robot_setup_tf/tf_broadcaster.py",
+    "robot_setup_tf/tf_listener": "robot_setup_tf/tf_listener.py",
+}
+
+
+def register_nodes() -> None:
+    """Register tf's nodes with the bus registry (idempotent)."""
+    from workbench.bus.registry import register_node
+
+    for name in ("tf/static_transform_publisher", "tf2_ros/static_transform_publisher"):
+        register_node(name, "workbench.tf.nodes:static_transform_publisher")
+    register_node(
+        "robot_state_publisher/robot_state_publisher", "workbench.tf.nodes:robot_state_publisher"
+    )
+    register_node(
+        "robot_state_publisher/state_publisher", "workbench.tf.nodes:robot_state_publisher"
+    )
+    register_node(
+        "joint_state_publisher/joint_state_publisher", "workbench.tf.nodes:joint_state_publisher"
+    )
+    register_node(
+        "joint_state_publisher_gui/joint_state_publisher_gui",
+        "workbench.tf.nodes:joint_state_publisher_gui",
+    )
+
+
+def examples_dir() -> Path:
+    """``examples/tf`` of the checkout."""
+    from workbench.paths import project_root
+
+    return project_root() / "examples" / "tf"
+
+
+def run_lab_script(node_type: str, argv: Sequence[str]) -> int:
+    """Run one of the manual's scripts as ``__main__`` with ``argv`` as its arguments."""
+    path = examples_dir() / LAB_SCRIPTS[node_type]
+    if not path.is_file():
+        raise InvalidArgumentException(
+            f"the lab script {path} is missing",
+            hint="run from a workbench checkout, or set WORKBENCH_HOME to one",
+        )
+    saved = sys.argv
+    sys.argv = [str(path), *argv]
+    try:
+        runpy.run_path(str(path), run_name="__main__")
+    finally:
+        sys.argv = saved
+    return 0
+
+
+def parse_static_args(args: Sequence[str]) -> tuple[str, str, tuple[float, ...], tuple[float, ...]]:
+    """``(frame_id, child, translation, quaternion)`` from static_transform_publisher's arguments."""
+    from workbench.tf.transformations import quaternion_from_euler
+
+    values = list(args)
+    if len(values) in (9, 10) and _is_number(values[-1]) and not _is_number(values[-2]):
+        values = values[:-1]  # tf's period in ms
+    try:
+        if len(values) == 8:
+            x, y, z, yaw, pitch, roll = (float(v) for v in values[:6])
+            q = tuple(float(v) for v in quaternion_from_euler(roll, pitch, yaw))
+        elif len(values) == 9:
+            x, y, z, *qs = (float(v) for v in values[:7])
+            norm = math.sqrt(sum(v * v for v in qs))
+            if norm == 0:
+                raise ValueError("zero quaternion")
+            q = tuple(v / norm for v in qs)
+        else:
+            raise ValueError(f"{len(values)} arguments")
+    except ValueError as error:
+        raise InvalidArgumentException(
+            f"static_transform_publisher: bad arguments ({error})",
+            hint="give x y z yaw pitch roll frame_id child_frame_id, or "
+            "x y z qx qy qz qw frame_id child_frame_id",
+        ) from None
+    return values[-2], values[-1], (x, y, z), q
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def _node(name: str, argv: Sequence[str]) -> tuple[Any, list[str]]:
+    from workbench.bus import Node
+    from workbench.bus.names import myargv
+
+    node = Node(name, argv=list(argv))
+    return node, myargv(list(argv))
+
+
+def static_transform_publisher(argv: Sequence[str] = ()) -> int:
+    """Publish one static transform on latched ``/tf_static`` until interrupted."""
+    from workbench.tf.broadcaster import StaticTransformBroadcaster, make_transform
+
+    node, args = _node("static_transform_publisher", argv)
+    parent, child, xyz, q = parse_static_args(args)
+    StaticTransformBroadcaster(node).send_transform(make_transform(parent, child, xyz, q))
+    node.bus.spin()
+    return 0
+
+
+def load_robot_from_params(node: Any) -> Any:
+    """The robot named by ``~robot`` or described by the ``robot_description`` XML."""
+    from workbench.model import load_robot
+
+    source = node.get_param("~robot", None)
+    if source:
+        return load_robot(source)
+    xml = node.get_param("robot_description", None)
+    if not xml:
+        from workbench.errors import ModelError
+
+        raise ModelError(
+            f"{node.name}: no robot given",
+            hint="set the private parameter ~robot (e.g. _robot:=robot_arm) or robot_description",
+        )
+    folder = Path(tempfile.mkdtemp(prefix="robot_description_"))
+    path = folder / "robot_description.urdf"
+    path.write_text(str(xml))
+    return load_robot(path)
+
+
+def robot_state_publisher(argv: Sequence[str] = ()) -> int:
+    """Run robot_state_publisher for the robot of the parameters until interrupted."""
+    from workbench.robot_state import RobotStatePublisher
+
+    node, _ = _node("robot_state_publisher", argv)
+    robot = load_robot_from_params(node)
+    RobotStatePublisher(
+        robot,
+        node,
+        publish_frequency=float(node.get_param("~publish_frequency", 50.0)),
+        tf_prefix=str(node.get_param("~tf_prefix", "")),
+    )
+    node.bus.spin()
+    return 0
+
+
+def _joint_state_publisher(argv: Sequence[str], gui: bool) -> int:
+    from workbench.robot_state import JointStatePublisher
+
+    node, _ = _node("joint_state_publisher", argv)
+    robot = load_robot_from_params(node)
+    jsp = JointStatePublisher(
+        robot,
+        node,
+        rate=float(node.get_param("~rate", 10.0)),
+        zeros=node.get_param("~zeros", None),
+        use_gui=gui or bool(node.get_param("~use_gui", False)),
+        source_list=node.get_param("~source_list", []) or [],
+    )
+    if jsp.viewer is not None:
+        node.get_logger().info(f"joint sliders at {jsp.viewer.url}")
+    node.bus.spin()
+    return 0
+
+
+def joint_state_publisher(argv: Sequence[str] = ()) -> int:
+    """Run joint_state_publisher (defaults; ``_use_gui:=true`` for sliders)."""
+    return _joint_state_publisher(argv, gui=False)
+
+
+def joint_state_publisher_gui(argv: Sequence[str] = ()) -> int:
+    """Run joint_state_publisher with Meshcat sliders."""
+    return _joint_state_publisher(argv, gui=True)
