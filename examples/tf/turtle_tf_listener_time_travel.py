@@ -16,10 +16,10 @@ if __name__ == "__main__":
     listener = tf.TransformListener()
 
     rospy.wait_for_service("spawn")
-    spawner = rospy.ServiceProxy("spawn", turtlesim.Spawn)
+    spawner = rospy.ServiceProxy("spawn", turtlesim.srv.Spawn)
     spawner(4, 2, 0, "turtle2")
 
-    turtle_vel = rospy.Publisher("turtle2/cmd_vel", geometry_msgs.Twist, queue_size=1)
+    turtle_vel = rospy.Publisher("turtle2/cmd_vel", geometry_msgs.msg.Twist, queue_size=1)
 
     rate = rospy.Rate(10.0)
     while not rospy.is_shutdown():
@@ -32,7 +32,7 @@ if __name__ == "__main__":
 
         angular = 4 * math.atan2(trans[1], trans[0])
         linear = 0.5 * math.sqrt(trans[0] ** 2 + trans[1] ** 2)
-        cmd = geometry_msgs.Twist()
+        cmd = geometry_msgs.msg.Twist()
         cmd.linear.x = linear
         cmd.angular.z = angular
         turtle_vel.publish(cmd)

@@ -8,7 +8,7 @@ import sys
 import time
 
 import pytest
-from conftest import REPO, free_port
+from bus_process_helpers import REPO, free_port
 
 from workbench.bus import AnyMsg, Bus, CoreError, Node, ServiceError, TopicTypeError
 from workbench.msgs.beginner_tutorials import AddTwoInts

@@ -197,3 +197,11 @@ def test_package_star_import():
     scope: dict = {}
     exec("from workbench.msgs.beginner_tutorials import *", scope)
     assert {"AddTwoInts", "AddTwoIntsRequest", "AddTwoIntsResponse"} <= set(scope)
+
+
+def test_package_modules_answer_to_msg_and_srv_as_rospy_scripts_write_them():
+    from workbench.msgs import geometry_msgs, turtlesim
+
+    assert turtlesim.msg.Pose is turtlesim.Pose
+    assert turtlesim.srv.Spawn is turtlesim.Spawn
+    assert geometry_msgs.msg.Twist()._type == "geometry_msgs/Twist"

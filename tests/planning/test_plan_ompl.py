@@ -91,3 +91,20 @@ def test_all_planner_names_exist_in_ompl():
 
     for name in PLANNERS:
         assert hasattr(og, name), name
+
+
+def test_shortcut_never_lengthens_and_stays_valid():
+    from workbench.planning.ompl_planner import shortcut
+
+    path = np.array([[-0.8, -0.8], [-0.8, 0.0], [-0.5, 0.8], [0.0, 0.8], [0.5, 0.8], [0.8, -0.8]])
+    out = shortcut(path, _segment_free)
+    np.testing.assert_allclose(out[0], path[0])
+    np.testing.assert_allclose(out[-1], path[-1])
+    assert len(out) < len(path)
+    for a, b in zip(out[:-1], out[1:], strict=True):
+        assert _segment_free(a, b)
+
+    def length(p):
+        return np.linalg.norm(np.diff(p, axis=0), axis=1).sum()
+
+    assert length(out) < length(path)

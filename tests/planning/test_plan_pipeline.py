@@ -112,3 +112,17 @@ def test_unsatisfiable_time_limit(arm3_config):  # noqa: F811
         planner.plan("q=0,0,0", start=start, time_limit=0.1)
     with pytest.raises(GoalError, match="time limit must be positive"):
         planner.plan("random", start=start, time_limit=0)
+
+
+def test_start_inside_the_sphere_margin_is_planned_with_exact_confirmation(arm3_planner):  # noqa: F811
+    # find a start the exact checker accepts but the spheres reject (next to an obstacle)
+    rng = np.random.default_rng(7)
+    candidates = rng.uniform(arm3_planner.lower, arm3_planner.upper, size=(5000, 3))
+    in_margin = [
+        q for q in candidates if not arm3_planner.spheres.is_free(q) and arm3_planner.is_free(q)
+    ]
+    assert in_margin, "the sphere model should reject some free states"
+    q = in_margin[0]
+    result = arm3_planner.plan("q=0.5,0.3,0.5", start=q, seed=1)
+    assert result.checks["exact_checks"] > 0
+    independent_check(arm3_planner, result.trajectory)

@@ -194,3 +194,14 @@ def test_record_info_and_replay_the_same_poses(lab):
     assert "Opening run.bag" in played.stdout
     replayed = [(m.msg.x, m.msg.y, m.msg.theta) for m in read_messages(cwd / "replayed.bag")]
     assert replayed == recorded
+
+
+def test_node_kill_last(lab):
+    cli, _, _ = lab
+    bad = cli("node", "kill", "/nobody", check=False)
+    assert bad.returncode == 1 and "unknown node [/nobody]" in bad.stderr
+    assert "killed" in cli("node", "kill", "/turtlesim").stdout
+    deadline = time.monotonic() + 20
+    while "/turtlesim" in cli("node", "list").stdout:
+        assert time.monotonic() < deadline, "turtlesim is still registered"
+        time.sleep(0.5)

@@ -1,9 +1,10 @@
 """Recording bus topics into a bag (``rosbag record``).
 
 The recorder subscribes with a deep queue and writes every message it
-receives, stamped with its receive time on the node's clock. With
-``all_topics`` it keeps looking for new topics while it runs, as
-``rosbag record -a`` does.
+receives, stamped with its receive time on the node's clock. It subscribes
+in the bus's raw mode: messages from other processes go into the bag as the
+bytes that arrived, never decoded and encoded again. With ``all_topics`` it
+keeps looking for new topics while it runs, as ``rosbag record -a`` does.
 """
 
 from __future__ import annotations
@@ -73,16 +74,24 @@ class Recorder:
             typename = published[topic]
             cls = get_type(typename)
             self._subscriptions[topic] = self.node.create_subscription(
-                topic, cls, self._callback, queue_size=QUEUE_SIZE, callback_args=topic
+                topic,
+                cls,
+                self._callback,
+                queue_size=QUEUE_SIZE,
+                callback_args=topic,
+                raw=True,
+                inline=True,  # write where the message arrives: no hand-over to the executor
             )
             self.writer.add_connection(topic, typename, callerid=self.node.name)
             new.append(topic)
         return new
 
-    def _callback(self, msg: Any, topic: str) -> None:
-        stamp = self.node.now()
+    def _callback(self, raw: Any, topic: str) -> None:
+        # raw: a workbench.bus.RawMessage (serialized bytes, type, receive time in ns)
         with self._lock:  # callbacks of different topics may run on different threads
-            self.writer.write(topic, msg, stamp)
+            if not self.writer.is_open:  # arrived while the recording was being closed
+                return
+            self.writer.write(topic, t=raw.recv_ns, typename=raw.type, data=raw.data)
             self.received += 1
 
     def flush(self, timeout: float = 10.0) -> bool:

@@ -30,6 +30,8 @@ def default_bag_name(prefix: str = "", when: datetime.datetime | None = None) ->
 
 def to_ns(stamp: Any) -> int:
     """A time as integer nanoseconds: ``int`` ns, ``float`` s, or a Time with secs/nsecs."""
+    if type(stamp) is int:
+        return stamp
     if stamp is None:
         return time.time_ns()
     if isinstance(stamp, bool):

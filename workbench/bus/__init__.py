@@ -25,10 +25,12 @@ from workbench.bus.entities import (
     Client,
     Publisher,
     Rate,
+    RawMessage,
     ServiceServer,
     Subscription,
     Timer,
     TimerEvent,
+    connection_header,
 )
 from workbench.bus.errors import (
     BusError,
@@ -60,6 +62,7 @@ __all__ = [
     "ParameterError",
     "Publisher",
     "Rate",
+    "RawMessage",
     "ServiceError",
     "ServiceRecord",
     "ServiceServer",
@@ -72,6 +75,7 @@ __all__ = [
     "TimerEvent",
     "TopicRecord",
     "TopicTypeError",
+    "connection_header",
     "default_bus",
     "master_uri",
     "set_default_bus",

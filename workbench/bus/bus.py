@@ -194,12 +194,12 @@ class Bus:
         with self._lock:
             self._subscriptions[sub.topic] = (*self._subscriptions.get(sub.topic, ()), sub)
             latched = [
-                p.last_message
+                (p, p.last_message)
                 for p in self._publishers.get(sub.topic, [])
                 if p.latch and p.last_message is not None and sub.md5 in ("*", p.md5)
             ]
-        for msg in latched:
-            sub._enqueue(msg)
+        for pub, msg in latched:
+            sub._enqueue(pub._raw(msg, self) if sub.raw else msg, pub.node.name)
         if self._link is not None:
             self._link.subscribe(sub)
         self._graph_changed()
@@ -435,7 +435,11 @@ class Bus:
         return self._stop_event.is_set()
 
     def shutdown(self, reason: str = "bus shut down") -> None:
-        """Shut down every node, stop the executor and leave the core."""
+        """Shut down every node, stop the executor and leave the core.
+
+        What was published is flushed to other processes first (bounded wait); the
+        same happens when the interpreter exits without calling this.
+        """
         for node in self.nodes():
             node.shutdown(reason)
         self._stop_event.set()

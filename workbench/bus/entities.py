@@ -34,10 +34,69 @@ class AnyMsg:
     _md5sum = "*"
 
 
+class RawMessage:
+    """What a ``raw=True`` subscription's callback receives: a message still serialized.
+
+    Attributes:
+        data: The ROS 1 serialized bytes (as in a bag).
+        type: The publisher's type name (``std_msgs/Int64``).
+        md5: The publisher's type md5sum.
+        recv_ns: Receive time on the bus clock (wall or simulated), integer nanoseconds.
+        callerid: The publishing node's name (ROS's connection header ``callerid``).
+        topic: The topic it was published on.
+    """
+
+    __slots__ = ("data", "type", "md5", "recv_ns", "callerid", "topic")
+
+    def __init__(
+        self, data: bytes, type: str, md5: str, recv_ns: int, callerid: str, topic: str
+    ) -> None:
+        self.data = data
+        self.type = type
+        self.md5 = md5
+        self.recv_ns = recv_ns
+        self.callerid = callerid
+        self.topic = topic
+
+    def deserialize(self) -> Message:
+        """Decode into a message object (needs the type to be known here)."""
+        from workbench.msgs import deserialize
+
+        return deserialize(self.data, self.type)
+
+    def __repr__(self) -> str:
+        return (
+            f"RawMessage({self.type}, {len(self.data)} bytes, topic={self.topic!r}, "
+            f"callerid={self.callerid!r})"
+        )
+
+
 #: The node whose callback is running in this thread (for rospy's get_caller_id).
 current_node: contextvars.ContextVar[Node | None] = contextvars.ContextVar(
     "workbench_current_node", default=None
 )
+
+#: (subscription, publishing node) of the message whose callback is running in this thread.
+_current_delivery: contextvars.ContextVar[tuple[Subscription, str] | None] = contextvars.ContextVar(
+    "workbench_current_delivery", default=None
+)
+
+
+def connection_header() -> dict[str, str] | None:
+    """ROS's connection header of the message whose callback is running now.
+
+    ROS gives callbacks ``msg._connection_header``; here messages are shared and
+    have fixed fields, so a callback asks for it instead. Keys: ``callerid``
+    (the publishing node, ``""`` if unknown), ``topic``, ``type``, ``md5sum``.
+
+    Returns:
+        The header, or ``None`` outside a subscription callback.
+    """
+    delivery = _current_delivery.get()
+    if delivery is None:
+        return None
+    sub, callerid = delivery
+    return {"callerid": callerid, "topic": sub.topic, "type": sub.type, "md5sum": sub.md5}
 
 
 def type_and_md5(data_class: Any) -> tuple[str, str]:
@@ -83,12 +142,28 @@ class Publisher:
         if self.latch:
             self.last_message = msg
         bus = self.node.bus
-        for sub in bus._subscribers_of(self.topic):
-            if sub.md5 == self.md5 or sub.md5 == "*":
-                sub._enqueue(msg)
+        subs = bus._subscribers_of(self.topic)
+        if subs:
+            callerid = self.node.name
+            raw = None
+            for sub in subs:
+                if sub.md5 == self.md5 or sub.md5 == "*":
+                    if sub.raw:  # in-process messages are objects: serialize once for all
+                        if raw is None:
+                            raw = self._raw(msg, bus)
+                        sub._enqueue(raw, callerid)
+                    else:
+                        sub._enqueue(msg, callerid)
         put = self._remote_put
         if put is not None:
             put(msg)
+
+    def _raw(self, msg: Message, bus: Any) -> RawMessage:
+        from workbench.msgs import serialize
+
+        return RawMessage(
+            serialize(msg), self.type, self.md5, bus.clock.now_ns(), self.node.name, self.topic
+        )
 
     def _coerce(self, args: tuple, kwargs: dict) -> Message:
         if len(args) == 1 and not kwargs and isinstance(args[0], Message):
@@ -135,6 +210,8 @@ class Subscription:
     """Delivers the messages of a topic to a callback through the bus's executor.
 
     The queue holds at most ``queue_size`` messages; when full, the oldest is dropped.
+    With ``raw``, the callback gets :class:`RawMessage` (serialized bytes) instead of
+    a decoded message.
     """
 
     def __init__(
@@ -146,6 +223,7 @@ class Subscription:
         queue_size: int | None,
         callback_args: Any = None,
         direct: bool = False,
+        raw: bool = False,
     ):
         self.node = node
         self.topic = topic
@@ -154,20 +232,21 @@ class Subscription:
         self.callback = callback
         self.callback_args = callback_args
         size = queue_size if queue_size and queue_size > 0 else None
-        self._queue: deque[Any] = deque(maxlen=size)
+        self._queue: deque[tuple[Any, str]] = deque(maxlen=size)
         self._scheduled = False
         self._direct = direct
+        self.raw = raw
         self.closed = False
         self.received = 0
 
-    def _enqueue(self, msg: Any) -> None:
+    def _enqueue(self, msg: Any, callerid: str = "") -> None:
         if self.closed:
             return
         self.received += 1
         if self._direct:
-            self._call(msg)
+            self._call(msg, callerid)
             return
-        self._queue.append(msg)
+        self._queue.append((msg, callerid))
         self.node.bus._schedule(self)
 
     def _execute(self, budget: int = 8) -> int:
@@ -176,20 +255,21 @@ class Subscription:
         queue = self._queue
         while ran < budget:
             try:
-                msg = queue.popleft()
+                msg, callerid = queue.popleft()
             except IndexError:
                 break
-            self._call(msg)
+            self._call(msg, callerid)
             ran += 1
         return ran
 
     def _pending(self) -> bool:
         return bool(self._queue)
 
-    def _call(self, msg: Any) -> None:
+    def _call(self, msg: Any, callerid: str = "") -> None:
         if self.callback is None or self.closed:
             return
         token = current_node.set(self.node)
+        delivery = _current_delivery.set((self, callerid))
         try:
             if self.callback_args is None:
                 self.callback(msg)
@@ -201,6 +281,7 @@ class Subscription:
                 f"{self.topic}: {type(error).__name__}: {error}\n{traceback.format_exc().rstrip()}"
             )
         finally:
+            _current_delivery.reset(delivery)
             current_node.reset(token)
 
     def get_num_connections(self) -> int:

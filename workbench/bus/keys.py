@@ -5,8 +5,13 @@ Graph names are encoded into one key chunk each by replacing ``/`` with
 chunks and can be matched with single-chunk wildcards:
 
 =================================================  ===========================================
-``wb/t/<md5>/<pkg>/<Name>/<topic>``                message data (ROS 1 serialized bytes)
-``wb/l/<md5>/<pkg>/<Name>/<topic>/<session>``      latched message of one publisher (queryable)
+``wb/t/<md5>/<pkg>/<Name>/<topic>/<node>``         message data (ROS 1 serialized bytes) from the
+                                                   publishing node (ROS's ``callerid``)
+``wb/l/<md5>/<pkg>/<Name>/<topic>/<node>/<session>``
+                                                   latched message of one publisher (queryable)
+``wb/b/<session>``                                 delivery barrier of a session (queryable): it
+                                                   answers once everything sent to it before the
+                                                   query has been handed to its subscriptions
 ``wb/s/<md5>/<pkg>/<Name>/<service>``              service queryable (request/response bytes)
 ``wb/g/<session>/<pid>/n/<node>``                  liveliness: a node
 ``wb/g/<session>/<pid>/<kind>/<node>/<md5>/<pkg>/<Name>/<name>``
@@ -45,20 +50,24 @@ def chunks_type(md5: str, pkg: str, name: str) -> tuple[str, str]:
     return f"{pkg}/{name}", md5
 
 
-def data_key(topic: str, type_name: str, md5: str) -> str:
-    return f"wb/t/{type_chunks(type_name, md5)}/{enc(topic)}"
+def data_key(topic: str, type_name: str, md5: str, node: str) -> str:
+    return f"wb/t/{type_chunks(type_name, md5)}/{enc(topic)}/{enc(node)}"
 
 
 def data_selector(topic: str) -> str:
-    return f"wb/t/*/*/*/{enc(topic)}"
+    return f"wb/t/*/*/*/{enc(topic)}/*"
 
 
-def latch_key(topic: str, type_name: str, md5: str, session: str) -> str:
-    return f"wb/l/{type_chunks(type_name, md5)}/{enc(topic)}/{session}"
+def latch_key(topic: str, type_name: str, md5: str, node: str, session: str) -> str:
+    return f"wb/l/{type_chunks(type_name, md5)}/{enc(topic)}/{enc(node)}/{session}"
 
 
 def latch_selector(topic: str) -> str:
-    return f"wb/l/*/*/*/{enc(topic)}/*"
+    return f"wb/l/*/*/*/{enc(topic)}/*/*"
+
+
+def barrier_key(session: str) -> str:
+    return f"wb/b/{session}"
 
 
 def service_key(service: str, type_name: str, md5: str) -> str:
@@ -112,10 +121,11 @@ def parse_token(key: str) -> Token | None:
     return None
 
 
-def parse_data_key(key: str) -> tuple[str, str, str] | None:
-    """``wb/t/<md5>/<pkg>/<Name>/<topic>`` or a latch key -> (topic, type, md5)."""
+def parse_data_key(key: str) -> tuple[str, str, str, str] | None:
+    """A data, latch or service key -> (topic, type, md5, publishing node or ``""``)."""
     parts = key.split("/")
     if len(parts) < 6 or parts[0] != "wb" or parts[1] not in ("t", "l", "s"):
         return None
     type_name, md5 = chunks_type(parts[2], parts[3], parts[4])
-    return dec(parts[5]), type_name, md5
+    node = dec(parts[6]) if len(parts) > 6 and parts[1] != "s" else ""
+    return dec(parts[5]), type_name, md5, node

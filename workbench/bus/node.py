@@ -167,6 +167,7 @@ class Node:
         queue_size: int | None = 10,
         callback_args: Any = None,
         inline: bool = False,
+        raw: bool = False,
     ) -> Subscription:
         """Subscribe to a topic.
 
@@ -181,6 +182,11 @@ class Node:
                 publisher's, or the transport's for another process) instead of on the
                 executor: lowest latency, no queue. The callback must be quick and must
                 not block, or it holds up delivery of everything behind it.
+            raw: Give the callback a :class:`~workbench.bus.RawMessage` (the ROS 1
+                serialized bytes with type, md5sum, receive time and publishing node)
+                instead of a decoded message: nothing is decoded for messages from
+                other processes (recorders, relays); in-process messages are
+                serialized once per publish.
 
         Raises:
             TopicTypeError: The topic carries another type.
@@ -195,6 +201,7 @@ class Node:
             queue_size,
             callback_args,
             direct=inline,
+            raw=raw,
         )
         self.bus._add_subscription(sub)
         with self._lock:
@@ -294,13 +301,19 @@ class Node:
             return list(self._publishers), list(self._subscriptions), list(self._services)
 
     def shutdown(self, reason: str = "") -> None:
-        """Close every publisher, subscription, service and timer and leave the graph."""
+        """Close every publisher, subscription, service and timer and leave the graph.
+
+        Messages this node published that are still on their way to subscribers in
+        other processes are delivered first (a bounded wait, ``WORKBENCH_FLUSH_TIMEOUT``
+        seconds at most, 10 by default).
+        """
         with self._lock:
             if self.is_shutdown:
                 return
             self.is_shutdown = True
             self.shutdown_reason = reason or "node shut down"
             entities = [*self._timers, *self._subscriptions, *self._services, *self._publishers]
+            topics = {pub.topic for pub in self._publishers}
         for hook in self._shutdown_hooks:
             try:
                 try:
@@ -309,6 +322,11 @@ class Node:
                     hook()
             except Exception as error:
                 print(f"[ERROR] shutdown hook failed: {error}", file=sys.stderr)
+        link = self.bus._link
+        if link is not None and topics:
+            # What this node published may still be on its way to slower subscribers in
+            # other processes: wait (bounded) until they have it before leaving.
+            link.flush(topics)
         for entity in entities:
             entity.shutdown()
         self.bus._unregister_node(self)

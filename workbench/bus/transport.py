@@ -4,15 +4,20 @@ One Zenoh session (client mode, connected to the core's router) per joined
 bus. The same ROS 1 bytes as in bags go on the wire; publishers block
 rather than drop under congestion (reliable delivery). Nodes and endpoints
 are Zenoh liveliness tokens, so a process that exits or is killed vanishes
-from every other process's graph.
+from every other process's graph. Before a session closes (node shutdown,
+bus shutdown, interpreter exit) it flushes: a barrier query to each
+subscribing session waits until what was published has arrived there.
+The publishing node's name travels in the data key (ROS's ``callerid``).
 """
 
 from __future__ import annotations
 
 import atexit
 import contextlib
+import functools
 import json
 import os
+import sys
 import threading
 import time
 import weakref
@@ -20,6 +25,7 @@ from concurrent.futures import ThreadPoolExecutor
 from typing import TYPE_CHECKING, Any
 
 from workbench.bus import keys
+from workbench.bus.entities import RawMessage
 from workbench.bus.errors import CoreError, ServiceError, ServiceTimeout
 from workbench.bus.graph import Endpoint
 from workbench.bus.params import ParameterError
@@ -34,6 +40,21 @@ if TYPE_CHECKING:
 
 #: Seconds a service call waits when the caller gives no timeout (rospy waits forever).
 NO_TIMEOUT = 24 * 3600.0
+
+#: Seconds a closing node or process waits, at most, for slower subscribers in other
+#: processes to receive what it published (``WORKBENCH_FLUSH_TIMEOUT`` overrides).
+FLUSH_TIMEOUT = 10.0
+
+#: Samples a raw subscription's channel holds before Zenoh waits (backpressure, no loss).
+RAW_CHANNEL_SIZE = 65536
+
+
+def flush_timeout() -> float:
+    """``WORKBENCH_FLUSH_TIMEOUT`` in seconds, or :data:`FLUSH_TIMEOUT`."""
+    try:
+        return max(0.0, float(os.environ.get("WORKBENCH_FLUSH_TIMEOUT", FLUSH_TIMEOUT)))
+    except ValueError:
+        return FLUSH_TIMEOUT
 
 
 class RemoteParams:
@@ -110,10 +131,13 @@ class ZenohLink:
         self._closed = False
         self._tokens: dict[int, Any] = {}  # id(entity) -> liveliness token
         self._declared: dict[int, list[Any]] = {}  # id(entity) -> zenoh publishers/queryables
-        self._topic_subs: dict[str, tuple[Any, int]] = {}  # topic -> (zenoh subscriber, refcount)
+        # (topic, raw) -> (zenoh subscriber, number of subscriptions using it)
+        self._topic_subs: dict[tuple[str, bool], tuple[Any, int]] = {}
         self._remote: dict[str, keys.Token] = {}
         self._warned: set[tuple[str, str, str]] = set()
-        self._parsed_keys: dict[str, tuple[str, str, str]] = {}
+        self._parsed_keys: dict[str, tuple[str, str, str, str]] = {}
+        self._unflushed: set[str] = set()  # topics published on since the last flush
+        self._pumps: list[threading.Thread] = []  # threads draining raw subscriptions
         self._pool = ThreadPoolExecutor(max_workers=4, thread_name_prefix="workbench-service")
         if not self._ping_core():
             self.session.close()
@@ -123,6 +147,10 @@ class ZenohLink:
             ) from None
         self._graph_sub = self.session.liveliness().declare_subscriber(
             "wb/g/**", self._handler(self._on_token), history=True
+        )
+        # Answered on the receive thread, so only after every sample that arrived before it.
+        self._barrier = self.session.declare_queryable(
+            keys.barrier_key(self.sid), self._handler(self._on_barrier)
         )
         self.refresh_graph()
         atexit.register(self.close)
@@ -138,6 +166,75 @@ class ZenohLink:
                 if time.monotonic() > deadline:
                     return False
                 time.sleep(0.1)
+
+    def _on_barrier(self, query: Any) -> None:
+        try:
+            query.reply(query.key_expr, b"")
+        finally:
+            with contextlib.suppress(Exception):
+                query.drop()
+
+    def flush(self, topics: Any = None, timeout: float | None = None) -> bool:
+        """Wait until subscribers in other processes have what was published so far.
+
+        Zenoh queues messages on their way to a slower subscriber; a session that
+        closes drops what is still queued. This sends a barrier query to every
+        session subscribed to a topic published on since the last flush, on the
+        same path and priority as the data, and waits for the answers: a session
+        answers once it has handed every earlier message to its subscriptions.
+
+        Args:
+            topics: Only these topics (default: all published on).
+            timeout: Seconds to wait at most (default :func:`flush_timeout`).
+
+        Returns:
+            Whether every subscribing session confirmed in time (``True`` if none).
+        """
+        with self._lock:
+            if self._closed:
+                return True
+            wanted = set(self._unflushed) if topics is None else self._unflushed & set(topics)
+            self._unflushed -= wanted
+            sessions = {
+                t.session
+                for t in self._remote.values()
+                if t.kind == "sub" and t.name in wanted and t.session != self.sid
+            }
+        if not sessions:
+            return True
+        z = self._z
+        timeout = flush_timeout() if timeout is None else timeout
+        started = time.monotonic()
+        pending = []
+        for sid in sorted(sessions):
+            try:
+                pending.append(
+                    self.session.get(
+                        keys.barrier_key(sid),
+                        timeout=max(timeout, 0.001),
+                        congestion_control=z.CongestionControl.BLOCK,
+                        priority=z.Priority.DATA,
+                        express=False,
+                    )
+                )
+            except Exception:  # the session is closing under us
+                return False
+        confirmed = 0
+        for replies in pending:
+            if any(reply.ok is not None for reply in replies):
+                confirmed += 1
+        if confirmed < len(pending):
+            waited = time.monotonic() - started
+            missing = len(pending) - confirmed
+            print(
+                f"[WARN] {missing} subscriber process(es) of {', '.join(sorted(wanted))} did not "
+                f"confirm receipt within {waited:.1f} s; messages still queued for them may be "
+                "lost (WORKBENCH_FLUSH_TIMEOUT sets the wait)",
+                file=sys.stderr,
+                flush=True,
+            )
+            return False
+        return True
 
     def _handler(self, function: Any) -> Any:
         # Run callbacks on Zenoh's own threads: the default ("indirect") handlers start
@@ -243,19 +340,24 @@ class ZenohLink:
             return
         z = self._z
         zpub = self.session.declare_publisher(
-            keys.data_key(pub.topic, pub.type, pub.md5),
+            keys.data_key(pub.topic, pub.type, pub.md5, pub.node.name),
             congestion_control=z.CongestionControl.BLOCK,
             reliability=z.Reliability.RELIABLE,
+            priority=z.Priority.DATA,  # the flush barrier relies on the same priority
+            express=False,
         )
         declared = [zpub]
         put = zpub.put
+        topic = pub.topic
+        mark = self._unflushed.add
 
         def send(msg: Any) -> None:
             put(serialize(msg))
+            mark(topic)
 
         pub._remote_put = send
         if pub.latch:
-            latch_key = keys.latch_key(pub.topic, pub.type, pub.md5, self.sid)
+            latch_key = keys.latch_key(pub.topic, pub.type, pub.md5, pub.node.name, self.sid)
 
             def answer(query: Any) -> None:
                 msg = pub.last_message
@@ -280,15 +382,33 @@ class ZenohLink:
         if self._closed:
             return
         topic = sub.topic
+        z = self._z
         with self._lock:
-            zsub, count = self._topic_subs.get(topic, (None, 0))
-            if zsub is None:
+            zsub, count = self._topic_subs.get((topic, sub.raw), (None, 0))
+            if zsub is None and sub.raw:
+                # Raw subscriptions (recorders) want throughput: Zenoh queues samples in a
+                # channel (blocking when full, so nothing is dropped) that one thread drains.
+                # A callback per sample on Zenoh's thread costs several times more.
                 zsub = self.session.declare_subscriber(
                     keys.data_selector(topic),
-                    self._handler(lambda sample, topic=topic: self._on_data(topic, sample)),
-                    allowed_origin=self._z.Locality.REMOTE,
+                    z.handlers.FifoChannel(RAW_CHANNEL_SIZE),
+                    allowed_origin=z.Locality.REMOTE,
                 )
-            self._topic_subs[topic] = (zsub, count + 1)
+                pump = threading.Thread(
+                    target=self._pump,
+                    args=(zsub.handler, topic),
+                    name=f"workbench-raw {topic}",
+                    daemon=True,
+                )
+                self._pumps.append(pump)
+                pump.start()
+            elif zsub is None:
+                zsub = self.session.declare_subscriber(
+                    keys.data_selector(topic),
+                    self._handler(functools.partial(self._on_data, topic, False)),
+                    allowed_origin=z.Locality.REMOTE,
+                )
+            self._topic_subs[(topic, sub.raw)] = (zsub, count + 1)
         self._token(
             sub,
             keys.endpoint_token(self.sid, self.pid, "sub", sub.node.name, topic, sub.type, sub.md5),
@@ -309,26 +429,46 @@ class ZenohLink:
             sample_session = str(reply.ok.key_expr).rsplit("/", 1)[-1]
             if sample_session == self.sid:
                 continue
-            self._deliver(sub, parsed[1], parsed[2], reply.ok.payload.to_bytes(), {})
+            _topic, type_name, md5, callerid = parsed
+            self._deliver(sub, type_name, md5, callerid, reply.ok.payload.to_bytes(), {})
 
     def unsubscribe(self, sub: Subscription) -> None:
         self._drop(sub)
+        key = (sub.topic, sub.raw)
         with self._lock:
-            zsub, count = self._topic_subs.get(sub.topic, (None, 0))
+            zsub, count = self._topic_subs.get(key, (None, 0))
             if zsub is None:
                 return
             if count <= 1:
-                del self._topic_subs[sub.topic]
+                del self._topic_subs[key]
             else:
-                self._topic_subs[sub.topic] = (zsub, count - 1)
+                self._topic_subs[key] = (zsub, count - 1)
                 zsub = None
         if zsub is not None:
             with contextlib.suppress(Exception):
                 zsub.undeclare()
 
-    def _on_data(self, topic: str, sample: Any) -> None:
+    def _pump(self, channel: Any, topic: str) -> None:
+        recv = channel.recv
+        on_data = self._on_data
+        while True:
+            try:
+                sample = recv()
+            except Exception:  # undeclared and empty: the subscription is gone
+                return
+            try:
+                on_data(topic, True, sample)
+            except Exception as error:  # keep receiving whatever one message did
+                print(f"[ERROR] delivering on {topic}: {error}", file=sys.stderr, flush=True)
+
+    def _on_data(self, topic: str, raw: bool, sample: Any) -> None:
+        # Runs once per message from another process: keep it lean. ``raw``: which of the
+        # topic's two Zenoh subscribers (raw or decoding) this came through.
         bus = self.bus_ref()
         if bus is None:
+            return
+        subs = bus._subscribers_of(topic)
+        if not subs:
             return
         key = str(sample.key_expr)
         parsed = self._parsed_keys.get(key)
@@ -337,14 +477,28 @@ class ZenohLink:
             if parsed is None:
                 return
             self._parsed_keys[key] = parsed
-        _topic, type_name, md5 = parsed
+        _topic, type_name, md5, callerid = parsed
         data = sample.payload.to_bytes()
+        if len(subs) == 1:
+            sub = subs[0]
+            if raw and sub.raw and (sub.md5 == md5 or sub.md5 == "*"):  # a recorder
+                clock = bus.clock
+                stamp = clock._sim_ns if clock._sim else time.time_ns()
+                sub._enqueue(RawMessage(data, type_name, md5, stamp, callerid, topic), callerid)
+                return
         decoded: dict[str, Any] = {}
-        for sub in bus._subscribers_of(topic):
-            self._deliver(sub, type_name, md5, data, decoded)
+        for sub in subs:
+            if sub.raw is raw:
+                self._deliver(sub, type_name, md5, callerid, data, decoded)
 
     def _deliver(
-        self, sub: Subscription, type_name: str, md5: str, data: bytes, decoded: dict[str, Any]
+        self,
+        sub: Subscription,
+        type_name: str,
+        md5: str,
+        callerid: str,
+        data: bytes,
+        decoded: dict[str, Any],
     ) -> None:
         if sub.md5 not in ("*", md5):
             warn_key = (sub.node.name, sub.topic, md5)
@@ -356,6 +510,14 @@ class ZenohLink:
                     "Dropping connection."
                 )
             return
+        if sub.raw:  # no decoding: the bytes, as they came
+            raw = decoded.get("")
+            if raw is None:
+                bus = sub.node.bus
+                raw = RawMessage(data, type_name, md5, bus.clock.now_ns(), callerid, sub.topic)
+                decoded[""] = raw
+            sub._enqueue(raw, callerid)
+            return
         msg = decoded.get(md5)
         if msg is None:
             try:
@@ -365,7 +527,7 @@ class ZenohLink:
                     return
                 msg = data  # an unknown type for a type-agnostic subscriber: raw bytes
             decoded[md5] = msg
-        sub._enqueue(msg)
+        sub._enqueue(msg, callerid)
 
     # --- services -------------------------------------------------------------------------
 
@@ -436,6 +598,12 @@ class ZenohLink:
     # --- lifetime -------------------------------------------------------------------------
 
     def close(self) -> None:
+        """Flush what was published (bounded wait), then leave the core."""
+        with self._lock:
+            if self._closed:
+                return
+        with contextlib.suppress(Exception):
+            self.flush()
         with self._lock:
             if self._closed:
                 return
@@ -450,5 +618,15 @@ class ZenohLink:
                     with contextlib.suppress(Exception):
                         item.undeclare()
         self._pool.shutdown(wait=False, cancel_futures=True)
+        with self._lock:
+            zsubs = [zsub for zsub, _count in self._topic_subs.values()]
+            self._topic_subs.clear()
+        for item in (self._barrier, self._graph_sub, *zsubs):
+            with contextlib.suppress(Exception):
+                item.undeclare()
+        current = threading.current_thread()
+        for pump in self._pumps:  # they end once their channel is closed and empty
+            if pump is not current:
+                pump.join(timeout=1.0)
         with contextlib.suppress(Exception):
             self.session.close()

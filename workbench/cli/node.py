@@ -83,23 +83,12 @@ def _ping(node: Any, g: Any, args: argparse.Namespace) -> int:
 
 
 def _kill(node: Any, g: Any, names: list[str]) -> int:
-    from workbench.errors import BusError
     from workbench.introspect.graphtext import require_node
 
     records = [require_node(g, n) for n in names]
     for record in records:
-        local = node.bus.get_node(record.name)
-        if local is not None:
-            local.shutdown("user request")
-        else:
-            killer = getattr(node.bus, "kill_node", None)
-            if killer is None:
-                raise BusError(
-                    f"cannot shut down {record.name}: it runs in another process",
-                    hint="stop it with Ctrl-C in its terminal",
-                )
-            killer(record.name)
         print(f"killing {record.name}")
+        node.bus.kill_node(record.name, "user request")
     print("killed")
     return 0
 

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from workbench.mapping.geometry import between, compose, transform_points
+from workbench.mapping.geometry import between, compose, transform_points, wrap_angle
 from workbench.mapping.grid import OccupancyGrid
 from workbench.mapping.likelihood import LikelihoodField
 from workbench.mapping.matcher import match_scan
@@ -38,6 +38,9 @@ class SlamConfig:
         angular_window: Half-width of the front end's rotation search (rad).
         angular_step: Rotation step of the searches (rad).
         min_score: Below this match score the odometry prediction is kept.
+        retry_score: Below this score the front end searches again in a wider window.
+        retry_linear_window: Half-width of that wider translation search (m).
+        retry_angular_window: Half-width of that wider rotation search (rad).
         prior_sigma: Std devs (m, rad) of the odometry prior of the front end's search.
         prior_weight: Weight of that prior against the mean likelihood.
         keyframe_distance: Travel that makes a new keyframe (m).
@@ -68,7 +71,10 @@ class SlamConfig:
     angular_window: float = float(np.radians(20.0))
     angular_step: float = float(np.radians(0.5))
     min_score: float = 0.25
-    prior_sigma: tuple[float, float] = (0.2, float(np.radians(10.0)))
+    retry_score: float = 0.45
+    retry_linear_window: float = 0.8
+    retry_angular_window: float = float(np.radians(45.0))
+    prior_sigma: tuple[float, float] = (0.2, float(np.radians(30.0)))
     prior_weight: float = 0.05
     keyframe_distance: float = 0.2
     keyframe_angle: float = float(np.radians(10.0))
@@ -156,6 +162,15 @@ class _Front:
             prior_weight=cfg.prior_weight,
         )
 
+    def _at_edge(self, pose: np.ndarray, guess: np.ndarray) -> bool:
+        cfg = self.cfg
+        shift = np.abs(pose[:2] - guess[:2]).max()
+        turn = abs(float(wrap_angle(pose[2] - guess[2])))
+        return bool(
+            shift >= cfg.linear_window - cfg.match_resolution
+            or turn >= cfg.angular_window - cfg.angular_step
+        )
+
     def add_scan(self, index: int, prev_index: int | None, prev_pose: np.ndarray | None):
         cfg = self.cfg
         scan = self.scans[index]
@@ -178,6 +193,23 @@ class _Front:
             4,
             cfg.prior_sigma,
         )
+        if result is not None and (
+            result.score < cfg.retry_score or self._at_edge(result.grid_pose, guess)
+        ):
+            # A poor fit, or a best pose on the edge of the window, usually means the odometry
+            # is off by more than the window: search a wider window and keep whichever
+            # fits better.
+            wide = self._match(
+                nodes,
+                guess,
+                self.points[index],
+                cfg.retry_linear_window,
+                cfg.retry_angular_window,
+                8,
+                cfg.prior_sigma,
+            )
+            if wide is not None and wide.score > result.score:
+                result = wide
         matched = result is not None and result.score >= cfg.min_score
         pose = result.pose if matched else guess
         if result is not None:

@@ -34,6 +34,11 @@ def package_getattr(package: str) -> tuple[Callable[[str], Any], Callable[[], li
     """The ``__getattr__`` and ``__dir__`` of the module ``workbench.msgs.<package>``."""
 
     def __getattr__(name: str) -> Any:
+        if name in ("msg", "srv"):
+            # `turtlesim.msg.Pose` / `turtlesim.srv.Spawn`, as in the lab's rospy scripts.
+            import sys
+
+            return sys.modules[f"workbench.msgs.{package}"]
         members = package_members(package)
         if name == "__all__":
             return sorted(members)

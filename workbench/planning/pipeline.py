@@ -28,6 +28,7 @@ from workbench.planning.collision import CollisionWorld
 from workbench.planning.errors import (
     GoalError,
     GoalInCollisionError,
+    NoPathError,
     StartInCollisionError,
     TrajectoryError,
 )
@@ -164,9 +165,12 @@ class MotionPlanner:
         return q
 
     def default_start(self) -> np.ndarray:
-        """The robot's default state: ``home`` when the group has one, else zeros within limits."""
-        if "home" in self.config.srdf.group_state_names(self.group):
-            return self.named_state("home")
+        """The robot's default state: the group's ``home``, else ``ready`` (MoveIt's Panda),
+        else its first named state, else zeros within limits."""
+        names = self.config.srdf.group_state_names(self.group)
+        for name in ("home", "ready", *names):
+            if name in names:
+                return self.named_state(name)
         return np.clip(np.zeros(len(self.joint_names)), self.lower, self.upper)
 
     def is_free(self, q: np.ndarray) -> bool:
@@ -273,42 +277,68 @@ class MotionPlanner:
 
         if planner_range is None:
             planner_range = RANGE_FRACTION * float(np.linalg.norm(self.upper - self.lower))
-        validity = self.validity
-        validity.trust(q_start, q_goal)
-        before = dict(vars(validity))
-        while True:
-            result = ompl_plan(
-                self.lower,
-                self.upper,
-                q_start,
-                q_goal,
-                validity.state_valid,
-                motion_valid=validity.motion_valid,
-                planner=name,
-                time_limit=limit,
-                seed=seed,
-                simplify=simplify,
-                planner_range=planner_range,
-            )
+        # Plan in the spheres' free space first (fast, conservative); if that finds nothing
+        # in half the time, or the start or goal lies in the spheres' margin, confirm every
+        # sphere rejection exactly for the (remaining) time.
+        margin_free = self.spheres is None or (
+            self.spheres.is_free(q_start) and self.spheres.is_free(q_goal)
+        )
+        spheres = self.spheres
+        attempts = [(self.step, not margin_free, limit, spheres)]
+        if margin_free and spheres is not None:
+            attempts = [
+                (self.step, False, limit / 2, spheres),
+                (self.step, True, limit / 2, spheres),
+            ]
+        solve_time = simplify_time = 0.0
+        index = 0
+        while index < len(attempts):
+            step, confirm, budget, model = attempts[index]
+            index += 1
+            validity = Validity(self.world, self.joints, step, model, confirm=confirm)
+            validity.trust(q_start, q_goal)
+            try:
+                result = ompl_plan(
+                    self.lower,
+                    self.upper,
+                    q_start,
+                    q_goal,
+                    validity.state_valid,
+                    motion_valid=validity.motion_valid,
+                    planner=name,
+                    time_limit=budget,
+                    seed=seed,
+                    simplify=simplify,
+                    planner_range=planner_range,
+                )
+            except NoPathError:
+                solve_time += budget
+                if index == len(attempts):
+                    raise NoPathError(
+                        f"{name} found no path within the time limit of {limit:g} s",
+                        hint="allow more time (--time-limit), try another planner, "
+                        "or move obstacles",
+                    ) from None
+                continue
+            solve_time += result.solve_time
+            simplify_time += result.simplify_time
             try:
                 trajectory, recheck_samples, t_timing, t_recheck = self._time_and_recheck(
                     result.path
                 )
                 break
             except TrajectoryError:
-                if validity.step > self.recheck_step:
-                    # The coarse edge step missed a thin obstacle: plan again at the fine step.
-                    validity = Validity(self.world, self.joints, self.recheck_step, self.spheres)
-                    validity.trust(q_start, q_goal)
-                elif validity.spheres is not None:
-                    # Last resort: exact geometry for every state.
-                    validity = Validity(self.world, self.joints, self.recheck_step, None)
-                else:
+                # The edge step missed a thin obstacle: plan again at the re-check's step with
+                # every rejection confirmed, and at last with exact geometry only.
+                if model is not None and step > self.recheck_step:
+                    attempts.append((self.recheck_step, True, limit, model))
+                elif model is not None:
+                    attempts.append((self.recheck_step, True, limit, None))
+                if index == len(attempts):
                     raise
-                before = dict(vars(validity))
+        result.solve_time, result.simplify_time = solve_time, simplify_time
         checks = {
-            key: int(getattr(validity, key) - before[key])
-            for key in ("sphere_checks", "exact_checks", "motions")
+            key: int(getattr(validity, key)) for key in ("sphere_checks", "exact_checks", "motions")
         }
         v_frac, a_frac = trajectory.peak_fractions()
         times = {

@@ -27,9 +27,11 @@ import math
 
 import numpy as np
 
+from workbench.planning import sphere_kernel
 from workbench.planning.collision import CollisionWorld, JointMap
 from workbench.planning.obstacles import ObstacleSet
 from workbench.planning.sphere_cover import cover_shape, load_sphere_model  # noqa: F401
+from workbench.planning.sphere_kernel import EPS as _EPS
 
 
 def _transform(rigid) -> np.ndarray:
@@ -189,6 +191,83 @@ class SphereChecker:
             [k for k in range(len(self._bp_a)) if k not in self._grids], dtype=int
         )
         self._build_field(seed)
+        self._kernel = self.kernel_data()
+
+    def kernel_data(self) -> tuple:
+        """The model packed for :mod:`workbench.planning.sphere_kernel` (its ``FIELDS``)."""
+        obs = self.obstacles
+        i64 = np.int64
+        J = len(self._steps)
+        step_stack = np.zeros((J, 3, 4, 4))
+        for k, (_, _, _, stack) in enumerate(self._steps):
+            step_stack[k] = stack.reshape(3, 4, 4)
+        has_field = getattr(obs, "field", None) is not None
+        G = len(self._grid_list)
+        grid_joints = np.full((G, 2), -1, dtype=i64)
+        grid_origin = np.zeros((G, 2))
+        grid_shape = np.ones((G, 2), dtype=i64)
+        grid_spec = np.zeros((G, 2))
+        grid_offset = np.zeros(G, dtype=i64)
+        tables, offset = [], 0
+        for g, (between, origin, step, table, margin) in enumerate(self._grid_list):
+            d = len(between)
+            grid_joints[g, :d] = between
+            grid_origin[g, :d] = origin
+            grid_shape[g, :d] = table.shape
+            grid_spec[g] = step, margin
+            grid_offset[g] = offset
+            tables.append(np.ravel(table))
+            offset += table.size
+        ks = self._sphere_pairs
+        bound_r = self._b_r
+        pair_body = np.stack([self._bp_a[ks], self._bp_b[ks]], axis=1).reshape(-1, 2)
+        reach = bound_r[pair_body[:, 0]] + bound_r[pair_body[:, 1]] + _EPS
+        sp_r = self.radii[self._sp_a] + self.radii[self._sp_b] + _EPS
+
+        def f64(a, *shape):
+            return np.ascontiguousarray(np.asarray(a, float).reshape(*shape))
+
+        def ints(a, *shape):
+            return np.ascontiguousarray(np.asarray(a, i64).reshape(*shape))
+
+        data = (
+            ints([c for c, _, _, _ in self._steps], -1),
+            ints([p for _, p, _, _ in self._steps], -1),
+            ints([gi for _, _, gi, _ in self._steps], -1),
+            step_stack,
+            np.ascontiguousarray(self._prismatic, dtype=np.bool_),
+            f64(self.local, -1, 3),
+            ints(self.owner_slot, -1),
+            f64(self.radii, -1),
+            ints(self.env_spheres if obs.any else [], -1),
+            np.array([has_field], dtype=np.bool_),
+            np.ascontiguousarray(obs.field if has_field else np.zeros((1, 1, 1)), np.float32),
+            f64(obs.field_lo if has_field else np.zeros(3), 3),
+            f64([obs.field_h, obs.field_slack] if has_field else [1.0, 0.0], 2),
+            f64(obs.sphere_c, -1, 3),
+            f64(obs.sphere_r, -1),
+            f64(obs.box_R, -1, 3, 3),
+            f64(obs._box_off, -1, 3),
+            f64(obs.box_h, -1, 3),
+            f64(obs.cyl_R, -1, 3, 3),
+            f64(obs._cyl_off, -1, 3),
+            f64(np.stack([obs.cyl_r, obs.cyl_h], axis=1) if len(obs.cyl_r) else [], -1, 2),
+            grid_joints,
+            grid_origin,
+            grid_shape,
+            grid_spec,
+            grid_offset,
+            f64(np.concatenate(tables) if tables else np.zeros(1), -1),
+            ints(self._b_slot, -1),
+            f64(self._b_local_h[:, :3, 0], -1, 3),
+            ints(pair_body, -1, 2),
+            f64(reach * reach, -1),
+            ints(self._sp_start[ks] if len(ks) else [], -1),
+            ints(self._sp_count[ks] if len(ks) else [], -1),
+            ints(np.stack([self._sp_a, self._sp_b], axis=1), -1, 2),
+            f64(sp_r * sp_r, -1),
+        )
+        return data
 
     def _build_field(self, seed: int, spacing: float = 0.02) -> None:
         """The obstacles' distance table over the region the robot's spheres can reach."""
@@ -377,10 +456,38 @@ class SphereChecker:
         return (Xs @ self._local_h)[..., 0]
 
     def configs_free(self, Q: np.ndarray) -> np.ndarray:
-        """Which group configurations (rows of ``Q``) the sphere model finds free."""
+        """Which group configurations (rows of ``Q``) the sphere model finds free (compiled)."""
+        Q = np.ascontiguousarray(np.atleast_2d(np.asarray(Q, float)))
+        self.checks += len(Q)
+        return sphere_kernel.configs_free(Q, self._num_slots, self._kernel)
+
+    def is_free(self, q: np.ndarray) -> bool:
+        """One group configuration (compiled)."""
+        self.checks += 1
+        return sphere_kernel.config_free(np.asarray(q, float), self._num_slots, self._kernel)
+
+    def motion_status(self, qa: np.ndarray, qb: np.ndarray, step: float) -> tuple[int, int]:
+        """Check the motion qa→qb every ``step`` (max-norm), ends first, stopping at a collision.
+
+        Returns:
+            ``(status, samples checked)``: 1 free, 0 both ends free but a sample between
+            collides, -1 an end collides (see :meth:`edge_samples` and :meth:`configs_free`
+            for the per-sample answer).
+        """
+        status, checked = sphere_kernel.motion_status(
+            np.asarray(qa, float), np.asarray(qb, float), float(step), self._num_slots, self._kernel
+        )
+        self.checks += checked
+        return status, checked
+
+    def configs_free_reference(self, Q: np.ndarray) -> np.ndarray:
+        """The numpy version of :meth:`configs_free`, the reference for the compiled kernel.
+
+        The kernel accepts no configuration this rejects (it grows radii by
+        :data:`~workbench.planning.sphere_kernel.EPS` against rounding).
+        """
         Q = np.atleast_2d(np.asarray(Q, float))
         n = len(Q)
-        self.checks += n
         X = self.body_transforms(Q)[:, :, :3, :].reshape(n, -1, 4)  # (n, 3 * slots, 4)
         centres = (X @ self._local_T).reshape(n, -1)[:, self._centre_index]  # (n, S, 3)
         bounds = (X @ self._bound_T).reshape(n, -1)[:, self._bound_index]  # (n, B, 3)
@@ -415,10 +522,6 @@ class SphereChecker:
                 )
                 bad[rows[(d2 < reach).any(axis=(1, 2))]] = True
         return ~bad
-
-    def is_free(self, q: np.ndarray) -> bool:
-        """One group configuration."""
-        return bool(self.configs_free(np.asarray(q, float)[None, :])[0])
 
     def edge_samples(self, qa: np.ndarray, qb: np.ndarray, step: float) -> np.ndarray:
         """Configurations on the segment qa→qb every ``step`` (max-norm), coarse to fine."""

@@ -2,10 +2,11 @@
 
 A configuration the sphere model accepts is free (the spheres cover the
 geometry). One it rejects may still be free — the spheres are larger than
-the links. The planner treats sampled states the spheres reject as invalid
+the links. By default the planner treats what the spheres reject as invalid
 (it gives up the thin margin around obstacles, as sphere-based planners
 do); only the start and goal, which may lie inside that margin, are
-confirmed with Drake's exact checker.
+confirmed with Drake's exact checker. With ``confirm=True`` every rejected
+sample is confirmed exactly (the exact free space, at a higher cost).
 Motions are sampled every ``step`` (max-norm over joints, rad or m) and all
 samples of an edge go through the sphere model in one batch. When both ends
 are clear of the spheres the motion must be clear of them too; when an end
@@ -30,15 +31,24 @@ class Validity:
         joints: The group's joints within the full position vector.
         step: Largest joint change between checked samples of a motion (rad or m).
         spheres: The sphere model, or None to check every sample exactly.
+        confirm: Confirm every sphere rejection exactly (exact semantics, slower) instead
+            of giving up the spheres' margin.
     """
 
     def __init__(
-        self, world: CollisionWorld, joints: JointMap, step: float, spheres: SphereChecker | None
+        self,
+        world: CollisionWorld,
+        joints: JointMap,
+        step: float,
+        spheres: SphereChecker | None,
+        *,
+        confirm: bool = False,
     ) -> None:
         self.world = world
         self.joints = joints
         self.step = float(step)
         self.spheres = spheres
+        self.confirm = confirm
         self.exact_checks = 0
         self.sphere_checks = 0
         self.motions = 0
@@ -59,7 +69,7 @@ class Validity:
         self.sphere_checks += 1
         if self.spheres.is_free(q):
             return True
-        if any(np.array_equal(q, t) for t in getattr(self, "_trusted", ())):
+        if self.confirm or any(np.array_equal(q, t) for t in getattr(self, "_trusted", ())):
             return self._exact(q)
         return False
 
@@ -67,9 +77,18 @@ class Validity:
         """True when every sample of the straight motion qa→qb is collision-free (qa assumed free)."""
         self.motions += 1
         if self.spheres is not None:
+            if not self.confirm:
+                # Compiled: ends first, then midpoints, stopping at the first collision.
+                status, checked = self.spheres.motion_status(qa, qb, self.step)
+                self.sphere_checks += checked
+                if status >= 0:
+                    # Both ends are clear of the spheres' margin: so must the motion be.
+                    return status == 1
             samples = self.spheres.edge_samples(qa, qb, self.step)  # [qa, qb, midpoints...]
             self.sphere_checks += len(samples)
             free = self.spheres.configs_free(samples)
+            if self.confirm:
+                return all(self._exact(q) for q in samples[1:][~free[1:]])
             if free[0] and free[1]:
                 # Both ends are clear of the spheres' margin: so must the motion be.
                 return bool(free.all())

@@ -42,8 +42,12 @@ class TransformListener:
     @staticmethod
     def _authority(msg: Any) -> str:
         header = getattr(msg, "_connection_header", None)
-        if isinstance(header, dict):
-            return str(header.get("callerid", "default_authority"))
+        if not isinstance(header, dict):
+            from workbench.bus import connection_header  # the publisher of the message at hand
+
+            header = connection_header()
+        if isinstance(header, dict) and header.get("callerid"):
+            return str(header["callerid"])
         return "default_authority"
 
     def _on_tf(self, msg: Any) -> None:

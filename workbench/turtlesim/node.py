@@ -94,6 +94,11 @@ class TurtlesimNode:
 
     # --- turtles on the bus ------------------------------------------------------------
 
+    def spawn(self, name: str, x: float, y: float, theta: float) -> str:
+        """Spawn a turtle with its topics and services (as the ``spawn`` service does)."""
+        with self.lock:
+            return self._spawn(name, x, y, theta)
+
     def _spawn(self, name: str, x: float, y: float, theta: float) -> str:
         real = self.sim.spawn(name, x, y, theta)
         self._advertise(real)
@@ -235,6 +240,26 @@ class TurtlesimNode:
         self._steps += 1
         if self.png is not None and self._steps % 63 == 0:
             self.save_png(self.png)
+
+    def advance(self, seconds: float) -> int:
+        """Step for ``seconds`` of simulated time, running the bus's callbacks between steps.
+
+        For notebooks and tests on a bus made with ``threaded=False`` (nothing else
+        steps it); returns the number of 16 ms steps taken. When the bus clock is
+        simulated (``bus.clock.use_sim_time()``), it follows the simulation's time, so
+        stamps (and bags) carry simulated seconds.
+        """
+        steps = max(0, round(seconds / UPDATE_PERIOD))
+        bus = self.node.bus
+        for _ in range(steps):
+            while bus.spin_once(0.0):
+                pass
+            self.step()
+            if bus.clock.is_simulated:
+                bus.clock.set_time(round(self.sim.time * 1e9))
+        while bus.spin_once(0.0):
+            pass
+        return steps
 
     def save_png(self, path: str | os.PathLike[str]) -> Path:
         """Write the canvas with the turtles to ``path``."""
