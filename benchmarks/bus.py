@@ -16,8 +16,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
-import platform
 import queue
 import signal
 import socket
@@ -27,6 +25,8 @@ import threading
 import time
 from pathlib import Path
 
+from machine import describe  # noqa: E402
+
 SEED = 0
 HERE = Path(__file__).resolve().parent
 
@@ -34,30 +34,6 @@ HERE = Path(__file__).resolve().parent
 def percentile(values: list[float], q: float) -> float:
     ordered = sorted(values)
     return ordered[min(len(ordered) - 1, int(q * len(ordered)))]
-
-
-def machine() -> dict:
-    cpu = "unknown"
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    from importlib.metadata import version
-
-    from workbench import __version__
-
-    return {
-        "cpu": cpu,
-        "cores": os.cpu_count(),
-        "python": platform.python_version(),
-        "workbench": __version__,
-        "eclipse-zenoh": version("eclipse-zenoh"),
-        "rosbags": version("rosbags"),
-        "seed": SEED,
-    }
 
 
 def payloads() -> dict:
@@ -355,7 +331,7 @@ def main() -> int:
         return 0
 
     n = 300 if args.quick else 2000
-    info = machine()
+    info = describe(("workbench", "eclipse-zenoh", "rosbags"), seed=SEED)
     rows = []
     from workbench.bus.core import Core
 

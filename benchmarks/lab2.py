@@ -19,7 +19,6 @@ import argparse
 import contextlib
 import json
 import os
-import platform
 import re
 import signal
 import socket
@@ -28,6 +27,8 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
+from machine import describe
 
 SEED = 0
 HERE = Path(__file__).resolve().parent
@@ -52,27 +53,6 @@ print(f"SENT {count} {elapsed:.6f}", flush=True)
 time.sleep(float(sys.argv[5]) if len(sys.argv) > 5 else 1.0)
 # exits now: what is still on its way to a slower subscriber is flushed on the way out
 """
-
-
-def machine() -> dict[str, object]:
-    cpu = "unknown"
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    from importlib.metadata import version
-
-    return {
-        "cpu": cpu,
-        "cores": os.cpu_count(),
-        "python": platform.python_version(),
-        "rosbags": version("rosbags"),
-        "zenoh": version("eclipse-zenoh"),
-        "seed": SEED,
-    }
 
 
 def free_port() -> int:
@@ -238,10 +218,10 @@ def main() -> int:
             ts = bench_turtlesim(env, seconds) if "turtlesim" in parts else None
     finally:
         stop(core)
-    info = machine()
+    info = describe(("rosbags", "eclipse-zenoh"), seed=SEED)
     if args.only is not None:
         print(f"machine: {info['cpu']}, {info['cores']} cores, python {info['python']}, "
-              f"rosbags {info['rosbags']}, zenoh {info['zenoh']}, seed {info['seed']}")  # fmt: skip
+              f"rosbags {info['rosbags']}, zenoh {info['eclipse-zenoh']}, seed {info['seed']}")  # fmt: skip
         print(json.dumps({"hz_echo": hz, "record": rec, "turtlesim": ts}, indent=2))
         return 0
     assert hz is not None and rec is not None and ts is not None
@@ -259,7 +239,7 @@ def main() -> int:
         ("turtlesim pose rate, 10 turtles (Hz)", ts["pose_rate_hz"], 62.5),
     ]
     print(f"machine: {info['cpu']}, {info['cores']} cores, python {info['python']}, "
-          f"rosbags {info['rosbags']}, zenoh {info['zenoh']}, seed {info['seed']}")  # fmt: skip
+          f"rosbags {info['rosbags']}, zenoh {info['eclipse-zenoh']}, seed {info['seed']}")  # fmt: skip
     print(f"{'measure':<50} {'workbench':>12} {'baseline':>12} {'ratio':>7}")
     for name, ours, base in rows:
         ratio = ours / base if base else float("nan")

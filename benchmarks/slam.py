@@ -23,14 +23,12 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
-import platform
 import sys
 import time
 from pathlib import Path
 
 import numpy as np
-import scipy
+from machine import describe  # noqa: E402
 from scipy.spatial import cKDTree
 
 from workbench.mapping import LikelihoodField, SlamConfig, build_map, read_log, run_slam
@@ -100,30 +98,6 @@ def alignment_likelihood(scans, poses: np.ndarray) -> float:
     return float(np.mean(scores))
 
 
-def machine() -> dict[str, object]:
-    cpu = "unknown"
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    try:
-        usable = len(os.sched_getaffinity(0))
-    except AttributeError:
-        usable = os.cpu_count()
-    return {
-        "cpu": cpu,
-        "cores": os.cpu_count(),
-        "usable_cores": usable,
-        "load_average": list(os.getloadavg()) if hasattr(os, "getloadavg") else None,
-        "python": platform.python_version(),
-        "numpy": np.__version__,
-        "scipy": scipy.__version__,
-    }
-
-
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--log", type=Path, default=DEFAULT_LOG, help="CARMEN log or ROS bag")
@@ -143,7 +117,7 @@ def main(argv: list[str] | None = None) -> int:
     duration = float(max(s.stamp for s in scans) - min(s.stamp for s in scans))
     seeds = 1 if args.quick else args.seeds
     levels = [name.strip() for name in args.levels.split(",")]
-    info = machine()
+    info = describe(("numpy", "scipy"))
     config = SlamConfig()
     rows = []
     print(f"log: {args.log} ({len(scans)} scans, {duration:.1f} s)")

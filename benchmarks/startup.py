@@ -28,28 +28,12 @@ import subprocess
 import sys
 import tempfile
 import time
-from importlib import metadata
 from pathlib import Path
+
+from machine import describe  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 SEED = 0  # nothing here is random; recorded for uniformity with the other benchmarks
-
-
-def cpu_model() -> str:
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown"
-
-
-def version(package: str) -> str:
-    try:
-        return metadata.version(package)
-    except metadata.PackageNotFoundError:
-        return "not installed"
 
 
 def timed(command: list[str], runs: int, cwd: Path) -> tuple[float, str]:
@@ -146,19 +130,14 @@ def main() -> int:
             )
     shutil.rmtree(work, ignore_errors=True)
 
-    machine = {
-        "cpu": cpu_model(),
-        "cores": os.cpu_count(),
-        "python": platform.python_version(),
-        "platform": platform.platform(),
-        "drake": version("drake"),
-        "lxml": version("lxml"),
-        "pydot": version("pydot"),
-        "graphviz_dot": dot or "not installed",
-        "seed": SEED,
-        "runs_per_row": runs,
-        "model": os.path.relpath(model, ROOT),
-    }
+    machine = describe(
+        ("drake", "lxml", "pydot"),
+        platform=platform.platform(),
+        graphviz_dot=dot or "not installed",
+        seed=SEED,
+        runs_per_row=runs,
+        model=os.path.relpath(model, ROOT),
+    )
     print(
         f"machine: {machine['cpu']}, {machine['cores']} cores, Python {machine['python']}, "
         f"drake {machine['drake']}, lxml {machine['lxml']}, pydot {machine['pydot']}"

@@ -22,17 +22,16 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import os
-import platform
 import sys
 import time
 from pathlib import Path
 
 import numpy as np
-import scipy
 from scipy.spatial.transform import Rotation, Slerp
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+
+from machine import describe  # noqa: E402
 
 from workbench.tf import Buffer, BufferCore  # noqa: E402
 from workbench.tf.broadcaster import make_transform  # noqa: E402
@@ -42,16 +41,6 @@ FRAMES = 21  # f0 (root) .. f20
 STAMPS = 100
 DT = 0.01
 T0 = 1000.0
-
-
-def cpu_model() -> str:
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown"
 
 
 def make_data(rng: np.random.Generator):
@@ -208,24 +197,14 @@ def main() -> int:
         }
     )
 
-    machine = {
-        "cpu": cpu_model(),
-        "cores": os.cpu_count(),
-        "python": platform.python_version(),
-        "numpy": np.__version__,
-        "scipy": scipy.__version__,
-        "seed": SEED,
-        "quick": args.quick,
-        "repeats": REPEATS,
-        "load_average": os.getloadavg()[0],
-    }
+    machine = describe(("numpy", "scipy"), seed=SEED, quick=args.quick, repeats=REPEATS)
     print(
         f"machine: {machine['cpu']}, {machine['cores']} cores, Python {machine['python']}, "
         f"numpy {machine['numpy']}, scipy {machine['scipy']}, seed {SEED}"
     )
     print(
         f"{FRAMES - 1} moving frames x {STAMPS} stamps; lookups at random interpolated times; "
-        f"best of {REPEATS}; load average {machine['load_average']:.1f}\n"
+        f"best of {REPEATS}; load average {machine['load_average'][0]:.1f}\n"
     )
     header = f"{'case':<16}{'core /s':>12}{'msg /s':>12}{'scipy /s':>12}{'core/scipy':>12}{'max diff':>11}"
     print(header)

@@ -64,3 +64,29 @@ def test_missing_dependency_is_an_import_error_naming_the_extra(monkeypatch):
     with pytest.raises(ImportError) as info:
         require("ompl")
     assert "workbench[plan]" in str(info.value)
+
+
+def test_a_missing_extra_is_one_line_naming_the_extra(tmp_path):
+    # A command whose optional package is missing reports the extra, not a traceback.
+    blocker = tmp_path / "sitecustomize.py"
+    blocker.write_text(
+        "import sys\n"
+        "class _Block:\n"
+        "    def find_spec(self, name, path=None, target=None):\n"
+        "        if name == 'ompl' or name.startswith('ompl.'):\n"
+        "            raise ModuleNotFoundError(\"No module named 'ompl'\", name='ompl')\n"
+        "sys.meta_path.insert(0, _Block())\n"
+    )
+    env = {"PYTHONPATH": str(tmp_path)}
+    import os
+
+    result = subprocess.run(
+        [sys.executable, "-m", "workbench", "plan", "arm3", "--to", "home"],
+        capture_output=True,
+        text=True,
+        env={**os.environ, **env},
+        timeout=300,
+    )
+    assert result.returncode == 1
+    assert "Traceback" not in result.stderr
+    assert "workbench[plan]" in result.stderr

@@ -12,6 +12,7 @@ from workbench.errors import MissingDependencyError
 EXTRA_OF_MODULE = {
     "ompl": "plan",
     "toppra": "plan",
+    "numba": "plan",
     "zenoh": "zenoh",
     "serial": "serial",
 }

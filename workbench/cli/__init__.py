@@ -23,7 +23,8 @@ import sys
 from collections.abc import Sequence
 
 from workbench import __version__
-from workbench.errors import WorkbenchError
+from workbench.errors import MissingDependencyError, WorkbenchError
+from workbench.optional import EXTRA_OF_MODULE
 
 #: command name -> one-line help, in the order ``--help`` lists them.
 COMMANDS: dict[str, str] = {
@@ -105,6 +106,16 @@ def main(argv: Sequence[str] | None = None) -> int:
         if os.environ.get("WORKBENCH_DEBUG"):
             raise
         return _report(command, error)
+    except ModuleNotFoundError as error:
+        # An optional package of an extra that is not installed: say which extra.
+        extra = EXTRA_OF_MODULE.get((error.name or "").split(".")[0])
+        if extra is None or os.environ.get("WORKBENCH_DEBUG"):
+            raise
+        missing = MissingDependencyError(
+            f"the optional package '{error.name}' is not installed",
+            hint=f"pip install 'workbench[{extra}]'",
+        )
+        return _report(command, missing)
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:

@@ -23,7 +23,16 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+
+from workbench.errors import MissingDependencyError
+
+try:
+    from numba import njit
+except ImportError as exc:  # the plan extra brings numba
+    raise MissingDependencyError(
+        f"the optional package 'numba' is not installed ({exc})",
+        hint="pip install 'workbench[plan]'",
+    ) from exc
 
 #: Growth of every radius in the compiled comparisons, m.
 EPS = 1e-9

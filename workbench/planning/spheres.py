@@ -1,4 +1,4 @@
-"""A sphere model of the robot, checked against the scene in numpy for many configurations at once.
+"""A sphere model of the robot, checked against the scene for many configurations at once.
 
 Planning spends nearly all its time asking "is this configuration free?".
 :class:`SphereChecker` answers it for a whole batch (every step of an edge) in
@@ -19,6 +19,11 @@ a few vectorised numpy operations:
 Because the spheres cover the geometry, a configuration the sphere model
 accepts is free for the exact geometry too; the planner still re-checks the
 final trajectory with Drake's exact checker before returning it.
+
+The planner's checks (:meth:`SphereChecker.configs_free`, :meth:`~SphereChecker.is_free`,
+:meth:`~SphereChecker.motion_status`) run in the compiled kernel of
+:mod:`workbench.planning.sphere_kernel`, which stops at the first collision;
+:meth:`SphereChecker.configs_free_reference` is the numpy version it is tested against.
 """
 
 from __future__ import annotations

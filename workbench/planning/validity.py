@@ -7,12 +7,15 @@ the links. By default the planner treats what the spheres reject as invalid
 do); only the start and goal, which may lie inside that margin, are
 confirmed with Drake's exact checker. With ``confirm=True`` every rejected
 sample is confirmed exactly (the exact free space, at a higher cost).
-Motions are sampled every ``step`` (max-norm over joints, rad or m) and all
-samples of an edge go through the sphere model in one batch. When both ends
-are clear of the spheres the motion must be clear of them too; when an end
-lies inside the margin (the start or goal next to an obstacle) the rejected
-samples are confirmed exactly. Without a sphere model every sample
-goes to the exact checker.
+Motions are sampled every ``step`` (max-norm over joints, rad or m) and go
+through the compiled sphere kernel in one call (ends first, then midpoints,
+stopping at the first collision). When both ends are clear of the spheres
+the motion must be clear of them too; a motion to a state the spheres reject
+is refused unless that state is the start or goal (OMPL asks for motions to
+states it has not checked); when an end that is the start or goal lies inside
+the margin (next to an obstacle) the rejected samples leading out of it are
+confirmed exactly. Without a sphere model every sample goes to the exact
+checker.
 """
 
 from __future__ import annotations
@@ -69,21 +72,30 @@ class Validity:
         self.sphere_checks += 1
         if self.spheres.is_free(q):
             return True
-        if self.confirm or any(np.array_equal(q, t) for t in getattr(self, "_trusted", ())):
+        if self.confirm or self._trusted_state(q):
             return self._exact(q)
         return False
+
+    def _trusted_state(self, q: np.ndarray) -> bool:
+        return any(np.array_equal(q, t) for t in getattr(self, "_trusted", ()))
 
     def motion_valid(self, qa: np.ndarray, qb: np.ndarray) -> bool:
         """True when every sample of the straight motion qa→qb is collision-free (qa assumed free)."""
         self.motions += 1
         if self.spheres is not None:
+            # Compiled: ends first, then midpoints, stopping at the first collision.
+            status, checked = self.spheres.motion_status(qa, qb, self.step)
+            self.sphere_checks += checked
+            if status == 1:
+                return True  # every sample clear of the spheres, hence free
             if not self.confirm:
-                # Compiled: ends first, then midpoints, stopping at the first collision.
-                status, checked = self.spheres.motion_status(qa, qb, self.step)
-                self.sphere_checks += checked
-                if status >= 0:
+                if status == 0:
                     # Both ends are clear of the spheres' margin: so must the motion be.
-                    return status == 1
+                    return False
+                if checked == 2 and not self._trusted_state(qb):
+                    # qb is rejected and is neither the start nor the goal: state_valid would
+                    # refuse it too (OMPL asks for motions to states it has not checked yet).
+                    return False
             samples = self.spheres.edge_samples(qa, qb, self.step)  # [qa, qb, midpoints...]
             self.sphere_checks += len(samples)
             free = self.spheres.configs_free(samples)
