@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import argparse
+import signal
 import sys
+import threading
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -49,7 +51,6 @@ def parse_positions(items: list[str]) -> dict[str, float]:
 
 def run(args: argparse.Namespace) -> int:
     import tempfile
-    import time
     from pathlib import Path
 
     from workbench.model import load_robot
@@ -76,13 +77,19 @@ def run(args: argparse.Namespace) -> int:
 
     viewer.add_joint_sliders(robot)
     joints = len(robot.joint_names)
-    print(f"{robot.name}: {len(robot.links)} links, {joints} movable joints")
-    print(f"Open {viewer.url} in a browser (joint sliders under Open Controls). Ctrl-C stops.")
-    sys.stdout.flush()
+    # Ctrl-C sets a flag instead of raising, so it cannot land inside a Drake call
+    # (or inside the print that tells the user to press it) and turn a clean stop
+    # into an interrupted one.
+    stop = threading.Event()
+    previous = signal.signal(signal.SIGINT, lambda *_: stop.set())
     try:
-        while True:
+        print(f"{robot.name}: {len(robot.links)} links, {joints} movable joints")
+        print(f"Open {viewer.url} in a browser (joint sliders under Open Controls). Ctrl-C stops.")
+        sys.stdout.flush()
+        while not stop.is_set():
             viewer.poll_sliders()
-            time.sleep(0.05)
-    except KeyboardInterrupt:
-        print("stopped")
+            stop.wait(0.05)
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    print("stopped")
     return 0

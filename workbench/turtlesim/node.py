@@ -26,7 +26,13 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from workbench.turtlesim.sim import DEFAULT_BACKGROUND, UPDATE_PERIOD, TurtleError, TurtleSim
+from workbench.turtlesim.sim import (
+    DEFAULT_BACKGROUND,
+    UPDATE_PERIOD,
+    TurtleError,
+    TurtleSim,
+    write_png,
+)
 
 NODE_NAME = "turtlesim"
 
@@ -265,15 +271,7 @@ class TurtlesimNode:
         """Write the canvas with the turtles to ``path``."""
         with self.lock:
             image = self.sim.render()
-        from workbench.errors import SimulationError
-
-        try:
-            image.save(path, format="PNG")
-        except OSError as error:
-            raise SimulationError(
-                f"cannot write the snapshot: {error.strerror or error}", path=path
-            ) from None
-        return Path(path)
+        return write_png(image, path)
 
     def close(self) -> None:
         """Stop the timer and write a last snapshot if asked to."""

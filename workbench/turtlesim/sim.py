@@ -27,9 +27,11 @@ from __future__ import annotations
 
 import logging
 import math
+import os
 import random
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import numpy as np
 from PIL import Image, ImageDraw
@@ -342,16 +344,32 @@ class TurtleSim:
         return np.asarray(self.render(), dtype=np.uint8)
 
     def save_png(self, path) -> None:
-        """Write :meth:`render` to ``path`` as PNG.
+        """Write :meth:`render` to ``path`` as PNG (atomically: readers never see half a file).
 
         Raises:
             SimulationError: the file cannot be written.
         """
-        try:
-            self.render().save(path, format="PNG")
-        except OSError as error:
-            raise SimulationError(
-                f"cannot write the turtlesim snapshot: {error.strerror or error}",
-                path=path,
-                hint="choose a writable path",
-            ) from None
+        write_png(self.render(), path)
+
+
+def write_png(image: Image.Image, path: str | os.PathLike[str]) -> Path:
+    """Write ``image`` to ``path`` as PNG through a temporary file and a rename.
+
+    A viewer or a test polling the snapshot never reads a half-written file.
+
+    Raises:
+        SimulationError: the file cannot be written.
+    """
+    target = Path(path)
+    partial = target.with_name(f".{target.name}.partial")
+    try:
+        image.save(partial, format="PNG")
+        os.replace(partial, target)
+    except OSError as error:
+        partial.unlink(missing_ok=True)
+        raise SimulationError(
+            f"cannot write the turtlesim snapshot: {error.strerror or error}",
+            path=path,
+            hint="choose a writable path",
+        ) from None
+    return target
