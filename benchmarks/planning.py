@@ -30,7 +30,6 @@ import argparse
 import json
 import logging
 import os
-import platform
 import re
 import subprocess
 import sys
@@ -243,17 +242,16 @@ def run_problem(config, problem, *, time_limit: float, seed: int, step: float) -
 
 
 def warm_up(suites: dict[str, tuple[object, list[dict]]], step: float) -> float:
-    """Compile (or load from numba's cache) the sphere kernel once; returns the seconds taken."""
+    """Compile (or load from numba's cache) the sphere kernel once; returns the seconds taken.
+
+    The first sphere checker of a process does it while it is built, outside any plan's timing.
+    """
     from workbench.planning.pipeline import MotionPlanner
+    from workbench.planning.spheres import kernel_load_seconds
 
     config, problems = next(iter(suites.values()))
-    planner = MotionPlanner(config=config, scene=problems[0]["scene"], edge_step=step)
-    q0, q1 = problems[0]["start"], problems[0]["goal"]
-    began = time.perf_counter()
-    planner.spheres.is_free(q0)
-    planner.spheres.configs_free(np.array([q0, q1]))
-    planner.spheres.motion_status(q0, q1, step)
-    return time.perf_counter() - began
+    MotionPlanner(config=config, scene=problems[0]["scene"], edge_step=step)
+    return kernel_load_seconds()
 
 
 def summarize(rows: list[dict]) -> dict:
@@ -281,31 +279,9 @@ def summarize(rows: list[dict]) -> dict:
 
 
 def machine() -> dict:
-    cpu = "unknown"
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    from importlib.metadata import version
+    from machine import describe
 
-    def v(name):
-        try:
-            return version(name)
-        except Exception:  # noqa: BLE001 (any metadata problem)
-            return "?"
-
-    return {
-        "cpu": cpu,
-        "cores": os.cpu_count(),
-        "python": platform.python_version(),
-        "drake": v("drake"),
-        "ompl": v("ompl"),
-        "toppra": v("toppra"),
-        "numpy": v("numpy"),
-    }
+    return describe(("drake", "ompl", "toppra", "numpy", "numba"))
 
 
 def print_table(summary: dict[str, dict[str, dict]]) -> None:
@@ -355,7 +331,8 @@ def main(argv=None) -> int:
     info = machine()
     print(
         f"machine: {info['cpu']}, {info['cores']} cores; python {info['python']}, drake "
-        f"{info['drake']}, ompl {info['ompl']}, toppra {info['toppra']}; seed {args.seed}; "
+        f"{info['drake']}, ompl {info['ompl']}, toppra {info['toppra']}, numba {info['numba']}; "
+        f"load average {info['load_average'][0]:.1f}; seed {args.seed}; "
         f"time limit {args.time_limit} s; one thread"
     )
     suites: dict[str, tuple[object, list[dict]]] = {}

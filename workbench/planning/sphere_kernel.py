@@ -24,15 +24,9 @@ import math
 
 import numpy as np
 
-from workbench.errors import MissingDependencyError
+from workbench.optional import require
 
-try:
-    from numba import njit
-except ImportError as exc:  # the plan extra brings numba
-    raise MissingDependencyError(
-        f"the optional package 'numba' is not installed ({exc})",
-        hint="pip install 'workbench[plan]'",
-    ) from exc
+njit = require("numba").njit
 
 #: Growth of every radius in the compiled comparisons, m.
 EPS = 1e-9

@@ -29,6 +29,7 @@ The planner's checks (:meth:`SphereChecker.configs_free`, :meth:`~SphereChecker.
 from __future__ import annotations
 
 import math
+import time
 
 import numpy as np
 
@@ -197,6 +198,24 @@ class SphereChecker:
         )
         self._build_field(seed)
         self._kernel = self.kernel_data()
+        # Compile the kernel (or load it from numba's cache) here, once per process, so
+        # that no plan's timing includes it.
+        began = time.perf_counter()
+        q = np.clip(np.zeros(len(joints.names)), *self._limits())
+        self.configs_free(q[None, :])
+        self.is_free(q)
+        self.motion_status(q, q, 1.0)
+        self.checks = 0
+        #: Seconds the first kernel calls took (compilation or cache load in the first checker).
+        self.kernel_load_seconds = time.perf_counter() - began
+        _KERNEL_LOAD.append(self.kernel_load_seconds)
+
+    def _limits(self) -> tuple[np.ndarray, np.ndarray]:
+        """The group's joint limits, ±π where a joint has none."""
+        lower, upper = self.world.position_limits()
+        lo = np.where(np.isfinite(lower), lower, -np.pi)[self.joints.indices]
+        hi = np.where(np.isfinite(upper), upper, np.pi)[self.joints.indices]
+        return lo, hi
 
     def kernel_data(self) -> tuple:
         """The model packed for :mod:`workbench.planning.sphere_kernel` (its ``FIELDS``)."""
@@ -537,6 +556,14 @@ class SphereChecker:
 
 
 _BISECTION_CACHE: dict[int, np.ndarray] = {}
+_KERNEL_LOAD: list[float] = []
+
+
+def kernel_load_seconds() -> float:
+    """Seconds the compiled kernel took to compile or load in this process (0 before use)."""
+    return max(_KERNEL_LOAD, default=0.0)
+
+
 _PAIR_GRIDS: dict[tuple, tuple] = {}
 
 
