@@ -72,8 +72,8 @@ def test_png_of_a_robot_differs_from_an_empty_scene(require_program, arm3, tmp_p
     from PIL import Image, ImageChops
 
     require_program("chromium")
-    viewer = Viewer.instance()
-    viewer.clear()
+    # A Meshcat of its own: the process-wide viewer may hold other tests' objects or animations.
+    viewer = Viewer()
     points = viewer.robot_points(arm3)
     viewer.frame_camera(points)
     empty_png = viewer.render_png(
