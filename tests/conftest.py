@@ -90,9 +90,23 @@ def run_cli():
     return _run
 
 
+class ExecutedNotebook:
+    """A notebook after execution: ``.notebook``, its code cells' ``.outputs`` and their ``.text``."""
+
+    def __init__(self, notebook) -> None:
+        self.notebook = notebook
+        self.outputs = [
+            output
+            for cell in notebook.cells
+            if cell.cell_type == "code"
+            for output in cell.get("outputs", [])
+        ]
+        self.text = "".join(output.get("text", "") for output in self.outputs)
+
+
 @pytest.fixture
 def run_notebook(tmp_path, monkeypatch):
-    """Execute a notebook from ``notebooks/`` in short mode; returns the executed notebook."""
+    """Execute a notebook from ``notebooks/`` in short mode; returns an :class:`ExecutedNotebook`."""
 
     def _run(name: str, timeout: float = 600):
         import nbformat
@@ -108,6 +122,6 @@ def run_notebook(tmp_path, monkeypatch):
             resources={"metadata": {"path": str(tmp_path)}},
         )
         client.execute()
-        return notebook
+        return ExecutedNotebook(notebook)
 
     return _run

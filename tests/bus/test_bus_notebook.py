@@ -9,12 +9,7 @@ import pytest
 @pytest.mark.multiprocess
 def test_pubsub_notebook(run_notebook):
     notebook = run_notebook("01_pubsub_services.ipynb")
-    text = "\n".join(
-        output.get("text", "")
-        for cell in notebook.cells
-        if cell.cell_type == "code"
-        for output in cell.get("outputs", [])
-    )
+    text = notebook.text
     assert "1 + 3 = 4" in text
     assert "heard from the talker process: ['hello world'" in text
     assert "after spinning (queue_size=3 keeps the newest): [2, 3, 4]" in text

@@ -8,12 +8,7 @@ import pytest
 @pytest.mark.notebook
 def test_slam_offline_notebook_runs(run_notebook):
     notebook = run_notebook("10_slam_offline.ipynb")
-    text = "".join(
-        output.get("text", "")
-        for cell in notebook.cells
-        if cell.cell_type == "code"
-        for output in cell.get("outputs", [])
-    )
+    text = notebook.text
     assert "loop closures" in text
     assert "reloaded equals the saved grid's trinary form: True" in text
     assert "dead reckoning" in text

@@ -6,12 +6,7 @@ import pytest
 @pytest.mark.notebook
 def test_plan_execute_notebook_runs(run_notebook):
     notebook = run_notebook("10_plan_execute.ipynb")
-    text = "\n".join(
-        output.get("text", "")
-        for cell in notebook.cells
-        if cell.cell_type == "code"
-        for output in cell.get("outputs", [])
-    )
+    text = notebook.text
     assert "collision re-check" in text and "passed" in text
     assert "max tracking error" in text
     assert "GoalInCollisionError" in text and "IKError" in text and "UnknownPlannerError" in text

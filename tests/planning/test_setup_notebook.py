@@ -8,14 +8,10 @@ import pytest
 @pytest.mark.notebook
 def test_setup_assistant_notebook(run_notebook):
     notebook = run_notebook("09_setup_assistant.ipynb")
-    outputs = [
-        out
-        for cell in notebook.cells
-        if cell.cell_type == "code"
-        for out in cell.get("outputs", [])
+    html = [
+        out["data"]["text/html"] for out in notebook.outputs if "text/html" in out.get("data", {})
     ]
-    html = [out["data"]["text/html"] for out in outputs if "text/html" in out.get("data", {})]
     assert any("<td>Adjacent</td>" in table for table in html)
-    text = "".join(out.get("text", "") for out in outputs)
+    text = notebook.text
     assert "[12/12] Wrote" in text
     assert "max tracking error" in text

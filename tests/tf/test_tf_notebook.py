@@ -8,12 +8,7 @@ import pytest
 @pytest.mark.notebook
 def test_tf_notebook_runs(run_notebook):
     notebook = run_notebook("04_tf.ipynb")
-    text = "".join(
-        output.get("text", "")
-        for cell in notebook.cells
-        if cell.cell_type == "code"
-        for output in cell.get("outputs", [])
-    )
+    text = notebook.text
     assert "- Translation: [" in text and "in RPY (degree)" in text
     assert "turtle1: \n  parent: 'world'" in text
     assert "radius 2.00" in text

@@ -8,21 +8,10 @@ import pytest
 @pytest.mark.notebook
 def test_turtlesim_notebook(run_notebook):
     notebook = run_notebook("02_turtlesim.ipynb")
-    text = "".join(
-        output.get("text", "")
-        for cell in notebook.cells
-        if cell.cell_type == "code"
-        for output in cell.get("outputs", [])
-    )
+    text = notebook.text
     assert 'name: "turtle2"' in text
     recorded = next(line for line in text.splitlines() if line.startswith("recorded end"))
     replayed = next(line for line in text.splitlines() if line.startswith("replayed end"))
     assert recorded.split("end")[1] == replayed.split("end")[1]
-    images = [
-        output
-        for cell in notebook.cells
-        if cell.cell_type == "code"
-        for output in cell.get("outputs", [])
-        if "image/png" in output.get("data", {})
-    ]
+    images = [output for output in notebook.outputs if "image/png" in output.get("data", {})]
     assert len(images) >= 5
