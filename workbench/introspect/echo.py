@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import json
-import math
 import re
 from collections.abc import Iterable
 from typing import Any
@@ -11,6 +9,9 @@ from typing import Any
 import numpy as np
 
 from workbench.errors import BusError
+from workbench.msgs._classes import Message
+from workbench.msgs._convert import format_scalar, to_yaml, yaml_lines
+from workbench.msgs._time import _TimeBase
 
 _INDEX = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*)(?:\[(-?\d+)\])?$")
 
@@ -69,76 +70,22 @@ def get_field(msg: Any, fields: list[str], *, topic: str = "") -> Any:
     return value
 
 
-def _scalar(value: Any) -> str:
-    if isinstance(value, np.generic):
-        value = value.item()
-    if isinstance(value, str):
-        return json.dumps(value, ensure_ascii=False)
-    if isinstance(value, float):
-        if math.isnan(value):
-            return "nan"
-        if math.isinf(value):
-            return "inf" if value > 0 else "-inf"
-        return repr(value)
-    return str(value)
-
-
-def _is_message(value: Any) -> bool:
-    return hasattr(type(value), "_specs") and hasattr(type(value), "__slots__")
-
-
-def _lines(msg: Any, indent: int, noarr: bool) -> list[str]:
-    pad = "  " * indent
-    out: list[str] = []
-    specs = {s.name: s for s in getattr(type(msg), "_specs", ())}
-    for name in type(msg).__slots__:
-        value = getattr(msg, name)
-        spec = specs.get(name)
-        is_array = spec is not None and spec.kind in ("array", "seq")
-        if is_array and noarr:
-            elem = spec.ros_type.split("[")[0]
-            out.append(f'{pad}{name}: "<array type: {elem}, length: {len(value)}>"')
-        elif (
-            hasattr(value, "secs")
-            and hasattr(value, "nsecs")
-            and not _is_message_with_fields(value)
-        ):
-            out += [f"{pad}{name}: ", f"{pad}  secs: {value.secs}", f"{pad}  nsecs: {value.nsecs}"]
-        elif _is_message(value):
-            out.append(f"{pad}{name}: ")
-            out += _lines(value, indent + 1, noarr)
-        elif isinstance(value, (list, np.ndarray)):
-            items = list(value)
-            if items and _is_message(items[0]):
-                out.append(f"{pad}{name}: ")
-                for item in items:
-                    out.append(f"{pad}  - ")
-                    out += _lines(item, indent + 2, noarr)
-            else:
-                out.append(f"{pad}{name}: [{', '.join(_scalar(v) for v in items)}]")
-        else:
-            out.append(f"{pad}{name}: {_scalar(value)}")
-    return out
-
-
-def _is_message_with_fields(value: Any) -> bool:
-    return _is_message(value) and set(type(value).__slots__) - {"secs", "nsecs", "sec", "nanosec"}
-
-
 def format_value(value: Any, *, noarr: bool = False) -> str:
     """One echoed value as ``rostopic echo`` prints it (without the ``---``)."""
-    if hasattr(value, "secs") and hasattr(value, "nsecs") and not _is_message_with_fields(value):
+    if isinstance(value, _TimeBase):
         return f"secs: {value.secs}\nnsecs: {value.nsecs}"
-    if _is_message(value):
-        return "\n".join(_lines(value, 0, noarr))
+    if isinstance(value, Message):
+        return to_yaml(value, noarr=noarr)
     if isinstance(value, (list, np.ndarray)):
         items = list(value)
-        if items and _is_message(items[0]):
-            return "\n".join(["-"] + [line for item in items for line in _lines(item, 1, noarr)])
+        if items and isinstance(items[0], Message):
+            return "\n".join(
+                ["-"] + [line for item in items for line in yaml_lines(item, 1, noarr=noarr)]
+            )
         if noarr:
             return f'"<array type: {type(items[0]).__name__ if items else "unknown"}, length: {len(items)}>"'
-        return f"[{', '.join(_scalar(v) for v in items)}]"
-    return _scalar(value)
+        return f"[{', '.join(format_scalar(v) for v in items)}]"
+    return format_scalar(value)
 
 
 def format_echo(value: Any, *, noarr: bool = False) -> str:

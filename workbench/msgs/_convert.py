@@ -97,12 +97,18 @@ def from_dict(cls: type[Message], data: Any, path: str = "") -> Message:
         raise
 
 
-def to_yaml(msg: Message, indent: int = 0) -> str:
-    """The message as ``rostopic echo`` prints it (without the trailing ``---``)."""
-    return "\n".join(_yaml_lines(msg, indent))
+def to_yaml(msg: Message, indent: int = 0, *, noarr: bool = False) -> str:
+    """The message as ``rostopic echo`` prints it (without the trailing ``---``).
+
+    ``noarr`` prints arrays as ``"<array type: T, length: N>"``, as ``rostopic echo --noarr``.
+    """
+    return "\n".join(yaml_lines(msg, indent, noarr=noarr))
 
 
-def _scalar(value: Any) -> str:
+def format_scalar(value: Any) -> str:
+    """One field value (not a message or array) as ``rostopic echo`` prints it."""
+    if isinstance(value, np.generic):
+        value = value.item()
     if isinstance(value, str):
         return json.dumps(value, ensure_ascii=False)
     if isinstance(value, bool):
@@ -116,12 +122,17 @@ def _scalar(value: Any) -> str:
     return str(value)
 
 
-def _yaml_lines(msg: Message, indent: int) -> list[str]:
+def yaml_lines(msg: Message, indent: int = 0, *, noarr: bool = False) -> list[str]:
+    """:func:`to_yaml`'s lines."""
     pad = "  " * indent
     lines: list[str] = []
+    arrays = {s.name: s for s in type(msg)._specs if s.kind in ("array", "seq")} if noarr else {}
     for name in msg.__slots__:
         value = getattr(msg, name)
-        if isinstance(value, _TimeBase):
+        if name in arrays:
+            element = arrays[name].ros_type.split("[")[0]
+            lines.append(f'{pad}{name}: "<array type: {element}, length: {len(value)}>"')
+        elif isinstance(value, _TimeBase):
             lines += [
                 f"{pad}{name}: ",
                 f"{pad}  secs: {value.secs}",
@@ -129,17 +140,17 @@ def _yaml_lines(msg: Message, indent: int) -> list[str]:
             ]
         elif isinstance(value, Message):
             lines.append(f"{pad}{name}: ")
-            lines += _yaml_lines(value, indent + 1)
+            lines += yaml_lines(value, indent + 1, noarr=noarr)
         elif isinstance(value, np.ndarray):
-            lines.append(f"{pad}{name}: [{', '.join(_scalar(v) for v in value.tolist())}]")
+            lines.append(f"{pad}{name}: [{', '.join(format_scalar(v) for v in value.tolist())}]")
         elif isinstance(value, list):
             if value and isinstance(value[0], Message):
                 lines.append(f"{pad}{name}: ")
                 for item in value:
                     lines.append(f"{pad}  - ")
-                    lines += _yaml_lines(item, indent + 2)
+                    lines += yaml_lines(item, indent + 2, noarr=noarr)
             else:
-                lines.append(f"{pad}{name}: [{', '.join(_scalar(v) for v in value)}]")
+                lines.append(f"{pad}{name}: [{', '.join(format_scalar(v) for v in value)}]")
         else:
-            lines.append(f"{pad}{name}: {_scalar(value)}")
+            lines.append(f"{pad}{name}: {format_scalar(value)}")
     return lines
