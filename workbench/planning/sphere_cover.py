@@ -1,8 +1,10 @@
 """Spheres that cover collision shapes: boxes, cylinders, capsules and convex meshes.
 
 Each function returns sphere centres (k, 3) in the shape's own frame and radii
-(k,) in metres whose union contains the shape (up to the surface sampling gap
-for meshes). :func:`load_sphere_model` reads hand-made decompositions instead.
+(k,) in metres whose union contains the shape. Boxes, cylinders (through the
+prism circumscribing them) and meshes (through their convex hulls, which Drake
+checks) are covered by :func:`_cover_hull`: spheres centred deep inside that
+bulge out of the surface by about :data:`COVER_BULGE`. :func:`load_sphere_model` reads hand-made decompositions instead.
 """
 
 from __future__ import annotations
@@ -12,25 +14,33 @@ import math
 import numpy as np
 
 
-def _cover_box(half: np.ndarray, cells_per_edge: int = 3) -> tuple[np.ndarray, np.ndarray]:
+#: How far a covering sphere may reach beyond the face nearest its centre, before the
+#: surface sampling gap is added, m. Thinner is a tighter model with more spheres.
+COVER_BULGE = 0.008
+#: Most spheres per shape: a thin or flat shape would need many small spheres, so its
+#: allowed bulge grows until it fits.
+MAX_SPHERES_PER_SHAPE = 160
+#: Surface samples per shape (each sphere grows by their spacing, so denser is tighter).
+SURFACE_SAMPLES = 12000
+#: Candidate centres per shape, drawn uniformly inside it.
+CANDIDATES = 4000
+
+
+def _cover_box(half: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Spheres enclosing a box of half extents ``half`` (centred at the origin)."""
-    size = 2 * half
-    cell = max(size.max() / cells_per_edge, size.min() / 2)
-    counts = np.maximum(1, np.ceil(size / cell - 1e-9)).astype(int)
-    step = size / counts
-    axes = [(-half[i] + step[i] * (np.arange(counts[i]) + 0.5)) for i in range(3)]
-    grid = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
-    radius = float(np.linalg.norm(step / 2))
-    return grid, np.full(len(grid), radius)
+    corners = np.array(np.meshgrid(*[[-h, h] for h in half], indexing="ij")).reshape(3, -1).T
+    return _cached_hull_cover(corners)
 
 
-def _cover_cylinder(radius: float, length: float) -> tuple[np.ndarray, np.ndarray]:
-    """Spheres along the z axis enclosing a solid cylinder."""
-    count = max(1, math.ceil(length / radius - 1e-9))
-    step = length / count
-    z = -length / 2 + step * (np.arange(count) + 0.5)
-    centres = np.stack([np.zeros(count), np.zeros(count), z], axis=1)
-    return centres, np.full(count, math.hypot(radius, step / 2))
+def _cover_cylinder(radius: float, length: float, sides: int = 32) -> tuple[np.ndarray, np.ndarray]:
+    """Spheres enclosing a solid cylinder along z (through the prism circumscribing it)."""
+    outer = radius / math.cos(math.pi / sides)
+    angle = 2 * math.pi * np.arange(sides) / sides
+    ring = np.stack([outer * np.cos(angle), outer * np.sin(angle)], axis=1)
+    prism = np.vstack(
+        [np.column_stack([ring, np.full(sides, z)]) for z in (-length / 2, length / 2)]
+    )
+    return _cached_hull_cover(prism)
 
 
 def hull_vertices(shape) -> np.ndarray:
@@ -42,57 +52,110 @@ def hull_vertices(shape) -> np.ndarray:
     return np.array([hull.vertex(i) for i in range(hull.num_vertices())], dtype=float)
 
 
-_MESH_COVERS: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
+_HULL_COVERS: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
 
 
-def _cover_mesh(shape, seed: int = 0):
-    """Spheres covering a mesh's convex hull (cached per hull: robots are rebuilt per scene)."""
-    vertices = hull_vertices(shape)
-    key = (vertices.shape, vertices.round(9).tobytes(), seed)
-    if key not in _MESH_COVERS:
-        _MESH_COVERS[key] = _cover_hull(vertices, seed)
-    centres, radii = _MESH_COVERS[key]
+def _cached_hull_cover(points: np.ndarray, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
+    """Spheres covering the convex hull of ``points`` (cached: robots are rebuilt per scene)."""
+    key = (
+        points.shape,
+        points.round(9).tobytes(),
+        seed,
+        COVER_BULGE,
+        MAX_SPHERES_PER_SHAPE,
+        SURFACE_SAMPLES,
+        CANDIDATES,
+    )
+    if key not in _HULL_COVERS:
+        _HULL_COVERS[key] = _cover_hull(points, seed)
+    centres, radii = _HULL_COVERS[key]
     return centres.copy(), radii.copy()
 
 
-def _cover_hull(hull: np.ndarray, seed: int):
-    """Spheres covering a convex hull, centred deep inside it.
+def _cover_hull(points: np.ndarray, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
+    """Few spheres whose union contains the convex hull of ``points`` and bulges out little.
 
-    Centres are k-means clusters of the hull's deepest interior points (near its
-    medial axis), so every sphere is nearly as wide as the hull where it sits and
-    bulges out of it little; each sphere reaches the farthest hull surface sample
-    nearest to it, plus the sampling gap.
+    A sphere centred at a point of depth ``d`` (its distance to the nearest face
+    plane) with radius ``d + bulge`` crosses no face plane by more than ``bulge``.
+    Among thousands of such candidates inside the hull, a greedy set cover picks
+    spheres until every surface sample (and a set of interior samples) is
+    covered; radii then grow by the samples' spacing so the surface between
+    samples is covered too. When that needs more than
+    :data:`MAX_SPHERES_PER_SHAPE` spheres (a thin plate) the bulge doubles.
     """
     import trimesh
-    from scipy.cluster.vq import kmeans2
-    from scipy.spatial import ConvexHull
+    from scipy.spatial import ConvexHull, QhullError
 
     rng = np.random.default_rng(seed)
-    equations = ConvexHull(hull).equations
-    lo, hi = hull.min(axis=0), hull.max(axis=0)
-    candidates = rng.uniform(lo, hi, size=(60000, 3))
-    depth = -(candidates @ equations[:, :3].T + equations[:, 3]).max(axis=1)
-    inside = depth > 0
+    points = np.asarray(points, float)
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    try:
+        equations = ConvexHull(points).equations
+    except QhullError:  # flat or degenerate: one sphere around its bounding box
+        centre = (lo + hi) / 2
+        return centre[None], np.array([np.linalg.norm(points - centre, axis=1).max()])
+    hull = points[ConvexHull(points).vertices]
     mesh = trimesh.convex.convex_hull(hull)
-    samples, _ = trimesh.sample.sample_surface_even(mesh, 4000, seed=seed)
-    surface = np.vstack([hull, samples])
-    spacing = math.sqrt(max(mesh.area, 1e-12) / max(len(samples), 1))
+    surface, _ = trimesh.sample.sample_surface_even(mesh, SURFACE_SAMPLES, seed=seed)
+    spacing = math.sqrt(max(mesh.area, 1e-12) / max(len(surface), 1))
+    candidates = np.zeros((0, 3))
+    for _ in range(20):  # rejection sampling; a hull fills at least a sliver of its box
+        sample = rng.uniform(lo, hi, size=(4 * CANDIDATES, 3))
+        depth = -(sample @ equations[:, :3].T + equations[:, 3]).max(axis=1)
+        candidates = np.vstack([candidates, sample[depth > 0]])
+        if len(candidates) >= CANDIDATES + 1000:
+            break
+    interior = candidates[CANDIDATES : CANDIDATES + 1000]
+    candidates = np.vstack([candidates[:CANDIDATES], hull.mean(axis=0)])
+    depth = np.maximum(-(candidates @ equations[:, :3].T + equations[:, 3]).max(axis=1), 0.0)
+    targets = np.vstack([hull, surface, interior])
     extent = float(np.linalg.norm(hi - lo))
-    count = int(np.clip(round(extent / 0.025), 2, 24))
-    if inside.sum() < 10 * count:  # a flat or tiny hull: cluster its surface
-        deep = surface
-    else:
-        deep = candidates[inside & (depth >= 0.6 * depth[inside].max())]
-    count = min(count, len(deep))
-    centres, _ = kmeans2(deep, count, seed=seed, minit="++")
-    nearest = np.argmin(((surface[:, None, :] - centres[None]) ** 2).sum(-1), axis=1)
-    keep_c, keep_r = [], []
-    for k in range(len(centres)):
-        members = surface[nearest == k]
-        if len(members):
-            keep_c.append(centres[k])
-            keep_r.append(np.linalg.norm(members - centres[k], axis=1).max() + spacing)
-    return np.array(keep_c), np.array(keep_r)
+    bulge = COVER_BULGE
+    while True:
+        chosen, radii = _greedy_cover(targets, candidates, depth + bulge)
+        if len(chosen) <= MAX_SPHERES_PER_SHAPE or bulge > extent:
+            return candidates[chosen], radii + spacing
+        bulge *= 2
+
+
+def _greedy_cover(
+    targets: np.ndarray, centres: np.ndarray, reach: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Greedy set cover of ``targets`` by balls (centres, reach): chosen indices and radii.
+
+    A target no ball reaches is covered by growing the ball that misses it least.
+    """
+    from scipy.sparse import csr_matrix
+    from scipy.spatial import cKDTree
+
+    reach = reach.copy()
+    tree = cKDTree(targets)
+    members = tree.query_ball_point(centres, reach)
+    rows = np.repeat(np.arange(len(centres)), [len(m) for m in members])
+    cols = np.concatenate([np.asarray(m, dtype=np.int64) for m in members])
+    covers = csr_matrix((np.ones(len(cols), bool), (rows, cols)), (len(centres), len(targets)))
+    covered_by = covers.T.tocsr()
+    counts = np.diff(covers.indptr).astype(np.int64)
+    uncovered = np.ones(len(targets), dtype=bool)
+    chosen: list[int] = []
+    while uncovered.any():
+        k = int(np.argmax(counts))
+        if counts[k] == 0:
+            t = int(np.nonzero(uncovered)[0][0])
+            miss = np.linalg.norm(centres - targets[t], axis=1) - reach
+            k = int(np.argmin(miss))
+            reach[k] += miss[k] + 1e-12
+            row = np.nonzero(np.linalg.norm(targets - centres[k], axis=1) <= reach[k])[0]
+        else:
+            row = covers.indices[covers.indptr[k] : covers.indptr[k + 1]]
+        new = row[uncovered[row]]
+        chosen.append(k)
+        uncovered[new] = False
+        if len(new):
+            counts -= np.bincount(covered_by[new].indices, minlength=len(counts))
+        counts[k] = 0
+    index = np.array(chosen, dtype=int)
+    return index, reach[index]
 
 
 def cover_shape(shape) -> tuple[np.ndarray, np.ndarray]:
@@ -114,7 +177,7 @@ def cover_shape(shape) -> tuple[np.ndarray, np.ndarray]:
     if isinstance(shape, Ellipsoid):
         return _cover_box(np.array([shape.a(), shape.b(), shape.c()]))
     if isinstance(shape, Mesh | Convex):
-        return _cover_mesh(shape)
+        return _cached_hull_cover(hull_vertices(shape))
     raise TypeError(f"no sphere cover for shape {type(shape).__name__}")
 
 

@@ -37,6 +37,7 @@ from workbench.planning import sphere_kernel
 from workbench.planning.collision import CollisionWorld, JointMap
 from workbench.planning.obstacles import ObstacleSet
 from workbench.planning.sphere_cover import cover_shape, load_sphere_model  # noqa: F401
+from workbench.planning.sphere_layout import build_layout
 from workbench.planning.sphere_kernel import EPS as _EPS
 
 
@@ -152,36 +153,43 @@ class SphereChecker:
                 centres.append(c @ X_BG[:3, :3].T + X_BG[:3, 3])
                 radii.append(r + padding)
                 owner += [body.index()] * len(r)
-        self.local = np.vstack(centres) if centres else np.zeros((0, 3))
-        self._local_h = np.hstack([self.local, np.ones((len(self.local), 1))])[:, :, None]
-        self.radii = np.concatenate(radii) if radii else np.zeros(0)
-        self.owner_slot = np.array([slot[b] for b in owner], dtype=int)
+        local = np.vstack(centres) if centres else np.zeros((0, 3))
+        radius = np.concatenate(radii) if radii else np.zeros(0)
+        owner_body = np.array([int(b) for b in owner], dtype=int)
+        owner_slot = np.array([slot[b] for b in owner], dtype=int)
         depends_of = {int(b): depends[b] for b in slot}
-        owner = np.array([int(b) for b in owner], dtype=int)
 
-        # Spheres that move with the group check the environment.
-        moving = np.array([bool(depends_of[b]) for b in owner], dtype=bool)
-        self.env_spheres = np.nonzero(moving)[0] if len(owner) else np.zeros(0, int)
+        # Spheres reordered into bodies and clusters (see sphere_layout).
+        layout = build_layout(local, radius, owner_body, owner_slot)
+        self.layout = layout
+        self.local = local[layout.order]
+        self._local_h = np.hstack([self.local, np.ones((len(self.local), 1))])[:, :, None]
+        self.radii = radius[layout.order]
+        self.owner_slot = owner_slot[layout.order]
+        self._part_spheres = [
+            np.arange(layout.cluster_spheres[c0, 0], layout.cluster_spheres[c1 - 1, 1])
+            for c0, c1 in layout.part_clusters
+        ]
+        # Bodies that move with the group check the environment.
+        self._env_parts = np.array(
+            [k for k, b in enumerate(layout.part_body) if depends_of[int(b)]], dtype=int
+        )
+        self.env_spheres = (
+            np.concatenate([self._part_spheres[k] for k in self._env_parts])
+            if len(self._env_parts)
+            else np.zeros(0, int)
+        )
 
-        # Self pairs: robot body pairs not filtered whose relative pose the group changes.
+        # Self pairs: robot body pairs not filtered whose relative pose the group changes
+        # (bodies with the same group joints above them never move relative to each other).
         filtered = world.checker.GetFilteredCollisionMatrix()
-        pairs_a, pairs_b = [], []
-        body_ids = sorted(set(owner.tolist()))
-        for i, a in enumerate(body_ids):
-            for b in body_ids[i + 1 :]:
-                if filtered[int(a), int(b)] != 0:
-                    continue
-                # bodies with the same group joints above them never move relative to
-                # each other: their pair cannot change during planning
-                if depends_of[a] == depends_of[b]:
-                    continue
-                sa, sb = np.nonzero(owner == a)[0], np.nonzero(owner == b)[0]
-                pa, pb = np.meshgrid(sa, sb, indexing="ij")
-                pairs_a.append(pa.ravel())
-                pairs_b.append(pb.ravel())
-        self.pair_a = np.concatenate(pairs_a) if pairs_a else np.zeros(0, int)
-        self.pair_b = np.concatenate(pairs_b) if pairs_b else np.zeros(0, int)
-        self.pair_r2 = (self.radii[self.pair_a] + self.radii[self.pair_b]) ** 2
+        pairs = []
+        for i, a in enumerate(layout.part_body):
+            for j in range(i + 1, len(layout.part_body)):
+                b = layout.part_body[j]
+                if filtered[int(a), int(b)] == 0 and depends_of[int(a)] != depends_of[int(b)]:
+                    pairs.append((i, j))
+        self._pairs = np.array(pairs, dtype=int).reshape(-1, 2)
         self.obstacles = ObstacleSet(world)
         self.checks = 0
         self._slot_depends = {slot[b]: depends[b] for b in slot}
@@ -189,15 +197,11 @@ class SphereChecker:
         for b, k in slot.items():
             if b != plant.world_body().index():
                 self._slot_bodies.setdefault(k, []).append(plant.get_body(b).name())
-        self._build_hierarchy(moving)
-        self._grids: dict[int, tuple] = {}
+        self._grid_list: list[tuple] = []
+        self._pair_grid_index = np.full(len(self._pairs), -1, dtype=int)
         self._build_pair_grids(seed)
-        self._grid_list = list(self._grids.values())
-        self._sphere_pairs = np.array(
-            [k for k in range(len(self._bp_a)) if k not in self._grids], dtype=int
-        )
         self._build_field(seed)
-        self._kernel = self.kernel_data()
+        self._kernel = sphere_kernel.pack(self.kernel_data(), self._num_slots)
         # Compile the kernel (or load it from numba's cache) here, once per process, so
         # that no plan's timing includes it.
         began = time.perf_counter()
@@ -220,6 +224,7 @@ class SphereChecker:
     def kernel_data(self) -> tuple:
         """The model packed for :mod:`workbench.planning.sphere_kernel` (its ``FIELDS``)."""
         obs = self.obstacles
+        layout = self.layout
         i64 = np.int64
         J = len(self._steps)
         step_stack = np.zeros((J, 3, 4, 4))
@@ -242,11 +247,8 @@ class SphereChecker:
             grid_offset[g] = offset
             tables.append(np.ravel(table))
             offset += table.size
-        ks = self._sphere_pairs
-        bound_r = self._b_r
-        pair_body = np.stack([self._bp_a[ks], self._bp_b[ks]], axis=1).reshape(-1, 2)
-        reach = bound_r[pair_body[:, 0]] + bound_r[pair_body[:, 1]] + _EPS
-        sp_r = self.radii[self._sp_a] + self.radii[self._sp_b] + _EPS
+        pa, pb = self._pairs[:, 0], self._pairs[:, 1]
+        reach = layout.part_radius[pa] + layout.part_radius[pb] + _EPS
 
         def f64(a, *shape):
             return np.ascontiguousarray(np.asarray(a, float).reshape(*shape))
@@ -254,17 +256,24 @@ class SphereChecker:
         def ints(a, *shape):
             return np.ascontiguousarray(np.asarray(a, i64).reshape(*shape))
 
-        data = (
+        return (
             ints([c for c, _, _, _ in self._steps], -1),
             ints([p for _, p, _, _ in self._steps], -1),
             ints([gi for _, _, gi, _ in self._steps], -1),
             step_stack,
-            np.ascontiguousarray(self._prismatic, dtype=np.bool_),
+            np.ascontiguousarray(self._prismatic, dtype=np.int64),
             f64(self.local, -1, 3),
-            ints(self.owner_slot, -1),
             f64(self.radii, -1),
-            ints(self.env_spheres if obs.any else [], -1),
-            np.array([has_field], dtype=np.bool_),
+            ints(layout.cluster_slot, -1),
+            f64(layout.cluster_centre, -1, 3),
+            f64(layout.cluster_radius, -1),
+            ints(layout.cluster_spheres, -1, 2),
+            ints(layout.part_slot, -1),
+            f64(layout.part_centre, -1, 3),
+            f64(layout.part_radius, -1),
+            ints(layout.part_clusters, -1, 2),
+            ints(self._env_parts if obs.any else [], -1),
+            np.array([has_field], dtype=np.int64),
             np.ascontiguousarray(obs.field if has_field else np.zeros((1, 1, 1)), np.float32),
             f64(obs.field_lo if has_field else np.zeros(3), 3),
             f64([obs.field_h, obs.field_slack] if has_field else [1.0, 0.0], 2),
@@ -282,16 +291,10 @@ class SphereChecker:
             grid_spec,
             grid_offset,
             f64(np.concatenate(tables) if tables else np.zeros(1), -1),
-            ints(self._b_slot, -1),
-            f64(self._b_local_h[:, :3, 0], -1, 3),
-            ints(pair_body, -1, 2),
+            ints(self._pairs, -1, 2),
             f64(reach * reach, -1),
-            ints(self._sp_start[ks] if len(ks) else [], -1),
-            ints(self._sp_count[ks] if len(ks) else [], -1),
-            ints(np.stack([self._sp_a, self._sp_b], axis=1), -1, 2),
-            f64(sp_r * sp_r, -1),
+            ints(self._pair_grid_index, -1),
         )
-        return data
 
     def _build_field(self, seed: int, spacing: float = 0.02) -> None:
         """The obstacles' distance table over the region the robot's spheres can reach."""
@@ -308,38 +311,42 @@ class SphereChecker:
         self.obstacles.build_field(box_lo, box_hi, spacing)
 
     def _build_pair_grids(self, seed: int, samples: int = 200, grid_step: float = 0.05) -> None:
-        """Exact distance tables for body pairs the spheres cannot resolve.
+        """Exact distance tables for body pairs whose spheres often overlap.
 
-        Some bodies sit so close to each other (the Panda's wrist and hand) that any
-        covering spheres overlap although the geometry does not. When such a pair's
-        relative pose depends on at most two of the group's joints, the exact signed
-        distance is tabulated over those joints every ``grid_step`` rad; a flagged
-        configuration is then free for that pair when the nearest table entry exceeds
-        what the joints' half-step can change it by. Tables depend on the robot only
-        and are cached per process.
+        Some bodies sit so close to each other (the Panda's wrist and hand) that their
+        covering spheres overlap in many poses although the geometry does not. When
+        such a pair's relative pose depends on at most two of the group's joints, the
+        exact signed distance is tabulated over those joints every ``grid_step`` rad;
+        a configuration whose nearest table entry exceeds what the joints' half-step
+        can change it by is free for that pair, and the spheres decide otherwise.
+        Tables depend on the robot only and are cached per process.
         """
-        if not len(self._bp_a):
+        if not len(self._pairs):
             return
         rng = np.random.default_rng(seed)
-        lower, upper = self.world.position_limits()
-        lo = np.where(np.isfinite(lower), lower, -np.pi)[self.joints.indices]
-        hi = np.where(np.isfinite(upper), upper, np.pi)[self.joints.indices]
+        lo, hi = self._limits()
         Q = rng.uniform(lo, hi, size=(samples, len(lo)))
-        X = self.body_transforms(Q)[:, :, :3, :].reshape(len(Q), -1, 4)
-        centres = (X @ self._local_T).reshape(len(Q), -1)[:, self._centre_index]
-        for k, (a_ids, b_ids, reach) in enumerate(self._bp_spheres):
-            sa, sb = int(self.owner_slot[a_ids[0]]), int(self.owner_slot[b_ids[0]])
+        centres = self.sphere_centres(Q)
+        layout = self.layout
+        by_slots: dict[tuple[int, int], list[int]] = {}
+        for k, (pa, pb) in enumerate(self._pairs):
+            by_slots.setdefault((int(layout.part_slot[pa]), int(layout.part_slot[pb])), []).append(k)
+        for (sa, sb), ks in by_slots.items():
             between = sorted(self._slot_depends[sa] ^ self._slot_depends[sb])
             if not 1 <= len(between) <= 2:
                 continue
-            ca, cb = centres[:, a_ids], centres[:, b_ids]
-            d2 = ((ca[:, :, None] - cb[:, None]) ** 2).sum(-1)
-            if (d2 < reach).any(axis=(1, 2)).mean() < 0.2:
+            overlap = np.zeros(samples, dtype=bool)
+            for k in ks:
+                a, b = (self._part_spheres[p] for p in self._pairs[k])
+                d2 = ((centres[:, a, None] - centres[:, None, b]) ** 2).sum(-1)
+                overlap |= (d2 < (self.radii[a, None] + self.radii[None, b]) ** 2).any(axis=(1, 2))
+            if overlap.mean() < 0.2:
                 continue
             key = (str(self.world.robot_path), tuple(self.joints.names), sa, sb, grid_step)
             if key not in _PAIR_GRIDS:
                 _PAIR_GRIDS[key] = self._pair_grid(sa, sb, between, lo, hi, grid_step)
-            self._grids[k] = _PAIR_GRIDS[key]
+            self._pair_grid_index[ks] = len(self._grid_list)
+            self._grid_list.append(_PAIR_GRIDS[key])
 
     def _pair_grid(self, sa: int, sb: int, between: list[int], lo, hi, step: float):
         names_a, names_b = set(self._slot_bodies[sa]), set(self._slot_bodies[sb])
@@ -387,66 +394,6 @@ class SphereChecker:
         # a conservative lever: distance to the joint's origin (not just its axis)
         return float(np.max(np.linalg.norm(centres - origin, axis=-1) + self.radii[spheres]))
 
-    def _build_hierarchy(self, moving: np.ndarray) -> None:
-        """One bounding sphere per body, and padded index tables from bodies to their spheres.
-
-        Checks test bounding spheres first and look at a body's own spheres only where its
-        bounding sphere touches an obstacle or another body's bounding sphere.
-        """
-        slots = np.unique(self.owner_slot)
-        members = [np.nonzero(self.owner_slot == slot)[0] for slot in slots]
-        width = max((len(m) for m in members), default=1)
-        self._b_slot = slots
-        self._b_members = np.zeros((len(slots), width), dtype=int)
-        self._b_mask = np.zeros((len(slots), width), dtype=bool)
-        centres, radii = [], []
-        for k, m in enumerate(members):
-            self._b_members[k, : len(m)] = m
-            self._b_mask[k, : len(m)] = True
-            local = self.local[m]
-            centre = (local.min(axis=0) + local.max(axis=0)) / 2
-            centres.append(centre)
-            radii.append(float(np.max(np.linalg.norm(local - centre, axis=1) + self.radii[m])))
-        self._b_local_h = np.hstack([np.array(centres), np.ones((len(slots), 1))])[:, :, None]
-        self._b_r = np.array(radii)
-        self._b_env = np.array([k for k, m in enumerate(members) if moving[m[0]]], dtype=int)
-        # Body pairs that need checking, each with its sphere pairs (padded).
-        body_of = {slot: k for k, slot in enumerate(slots)}
-        grouped: dict[tuple[int, int], list[int]] = {}
-        for i, (a, b) in enumerate(zip(self.pair_a, self.pair_b, strict=True)):
-            key = (body_of[self.owner_slot[a]], body_of[self.owner_slot[b]])
-            grouped.setdefault(key, []).append(i)
-        keys = list(grouped)
-        self._bp_a = np.array([k[0] for k in keys], dtype=int)
-        self._bp_b = np.array([k[1] for k in keys], dtype=int)
-        self._bp_reach2 = (self._b_r[self._bp_a] + self._b_r[self._bp_b]) ** 2
-        order = np.concatenate([np.array(grouped[key], dtype=int) for key in keys]) if keys else []
-        self._sp_a = self.pair_a[order] if len(order) else np.zeros(0, int)
-        self._sp_b = self.pair_b[order] if len(order) else np.zeros(0, int)
-        self._sp_r2 = self.pair_r2[order] if len(order) else np.zeros(0)
-        self._sp_count = np.array([len(grouped[key]) for key in keys], dtype=int)
-        # Per body pair: the two bodies' sphere indices and the squared reach of every pair
-        # (pairs not to be checked get -1, which never hits).
-        self._bp_spheres = []
-        for key in keys:
-            idx = np.array(grouped[key], dtype=int)
-            a_ids, b_ids = np.unique(self.pair_a[idx]), np.unique(self.pair_b[idx])
-            reach = np.full((len(a_ids), len(b_ids)), -1.0)
-            ia = np.searchsorted(a_ids, self.pair_a[idx])
-            ib = np.searchsorted(b_ids, self.pair_b[idx])
-            reach[ia, ib] = self.pair_r2[idx]
-            self._bp_spheres.append((a_ids, b_ids, reach))
-        self._sp_start = np.concatenate([[0], np.cumsum(self._sp_count)[:-1]]).astype(int)
-        # Sphere centres of every slot in one product: rows 3*slot+i of X @ local_h.
-        S = len(self.radii)
-        self._centre_index = (3 * self.owner_slot[:, None] + np.arange(3)) * S + np.arange(S)[
-            :, None
-        ]
-        self._local_T = self._local_h[:, :, 0].T.copy()  # (4, S)
-        B = len(self._b_slot)
-        self._bound_index = (3 * self._b_slot[:, None] + np.arange(3)) * B + np.arange(B)[:, None]
-        self._bound_T = self._b_local_h[:, :, 0].T.copy()  # (4, B)
-
     @property
     def num_spheres(self) -> int:
         """Number of spheres in the robot model."""
@@ -483,12 +430,12 @@ class SphereChecker:
         """Which group configurations (rows of ``Q``) the sphere model finds free (compiled)."""
         Q = np.ascontiguousarray(np.atleast_2d(np.asarray(Q, float)))
         self.checks += len(Q)
-        return sphere_kernel.configs_free(Q, self._num_slots, self._kernel)
+        return sphere_kernel.configs_free(Q, *self._kernel)
 
     def is_free(self, q: np.ndarray) -> bool:
         """One group configuration (compiled)."""
         self.checks += 1
-        return sphere_kernel.config_free(np.asarray(q, float), self._num_slots, self._kernel)
+        return sphere_kernel.config_free(np.asarray(q, float), *self._kernel)
 
     def motion_status(self, qa: np.ndarray, qb: np.ndarray, step: float) -> tuple[int, int]:
         """Check the motion qa→qb every ``step`` (max-norm), ends first, stopping at a collision.
@@ -499,7 +446,7 @@ class SphereChecker:
             for the per-sample answer).
         """
         status, checked = sphere_kernel.motion_status(
-            np.asarray(qa, float), np.asarray(qb, float), float(step), self._num_slots, self._kernel
+            np.asarray(qa, float), np.asarray(qb, float), float(step), *self._kernel
         )
         self.checks += checked
         return status, checked
@@ -507,44 +454,30 @@ class SphereChecker:
     def configs_free_reference(self, Q: np.ndarray) -> np.ndarray:
         """The numpy version of :meth:`configs_free`, the reference for the compiled kernel.
 
-        The kernel accepts no configuration this rejects (it grows radii by
+        Every moving sphere against every obstacle primitive; every sphere pair of every
+        self-collision body pair, unless the pair's distance table clears it. The kernel
+        accepts no configuration this rejects (it grows radii by
         :data:`~workbench.planning.sphere_kernel.EPS` against rounding).
         """
         Q = np.atleast_2d(np.asarray(Q, float))
         n = len(Q)
-        X = self.body_transforms(Q)[:, :, :3, :].reshape(n, -1, 4)  # (n, 3 * slots, 4)
-        centres = (X @ self._local_T).reshape(n, -1)[:, self._centre_index]  # (n, S, 3)
-        bounds = (X @ self._bound_T).reshape(n, -1)[:, self._bound_index]  # (n, B, 3)
+        centres = self.sphere_centres(Q)
         bad = np.zeros(n, dtype=bool)
         env = self.env_spheres
         if len(env) and self.obstacles.any:
-            flat = centres[:, env].reshape(-1, 3)
-            radii = np.tile(self.radii[env], n)
-            candidates = np.nonzero(self.obstacles.near(flat, radii))[0]
-            if len(candidates):
-                hits = self.obstacles.hit(flat[candidates], radii[candidates])
-                bad[candidates[hits] // len(env)] = True
-        for between, origin, step, table, margin in self._grid_list:
-            # tabulated pairs: one lookup instead of their spheres
-            index = np.rint((Q[:, between] - origin) / step).astype(np.intp)
-            np.clip(index, 0, np.array(table.shape) - 1, out=index)
-            bad |= table[tuple(index.T)] <= margin
-        if len(self._sphere_pairs):
-            ks = self._sphere_pairs
-            d = bounds[:, self._bp_a[ks]] - bounds[:, self._bp_b[ks]]
-            close = (d * d).sum(axis=-1) < self._bp_reach2[ks]
-            close &= ~bad[:, None]
-            for c in np.nonzero(close.any(axis=0))[0]:
-                rows = np.nonzero(close[:, c])[0]
-                a_ids, b_ids, reach = self._bp_spheres[ks[c]]
-                ca = centres[rows][:, a_ids]
-                cb = centres[rows][:, b_ids]
-                d2 = (
-                    (ca * ca).sum(axis=-1)[:, :, None]
-                    + (cb * cb).sum(axis=-1)[:, None, :]
-                    - 2.0 * ca @ cb.transpose(0, 2, 1)
-                )
-                bad[rows[(d2 < reach).any(axis=(1, 2))]] = True
+            hits = self.obstacles.hit(centres[:, env].reshape(-1, 3), np.tile(self.radii[env], n))
+            bad |= hits.reshape(n, len(env)).any(axis=1)
+        for k, (pa, pb) in enumerate(self._pairs):
+            a, b = self._part_spheres[pa], self._part_spheres[pb]
+            d2 = ((centres[:, a, None] - centres[:, None, b]) ** 2).sum(-1)
+            touch = (d2 < (self.radii[a, None] + self.radii[None, b]) ** 2).any(axis=(1, 2))
+            g = self._pair_grid_index[k]
+            if g >= 0:
+                between, origin, step, table, margin = self._grid_list[g]
+                index = np.rint((Q[:, between] - origin) / step).astype(np.intp)
+                np.clip(index, 0, np.array(table.shape) - 1, out=index)
+                touch &= ~(table[tuple(index.T)] > margin)
+            bad |= touch
         return ~bad
 
     def edge_samples(self, qa: np.ndarray, qb: np.ndarray, step: float) -> np.ndarray:

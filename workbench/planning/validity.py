@@ -62,7 +62,7 @@ class Validity:
 
     def trust(self, *configurations: np.ndarray) -> None:
         """Configurations (start, goal) whose sphere rejections are confirmed exactly."""
-        self._trusted = [np.asarray(q, float) for q in configurations]
+        self._trusted = {np.asarray(q, float).tobytes() for q in configurations}
 
     def state_valid(self, q: np.ndarray) -> bool:
         """True when the group configuration ``q`` is free (of the spheres' margin, except at
@@ -77,7 +77,7 @@ class Validity:
         return False
 
     def _trusted_state(self, q: np.ndarray) -> bool:
-        return any(np.array_equal(q, t) for t in getattr(self, "_trusted", ()))
+        return np.asarray(q, float).tobytes() in getattr(self, "_trusted", ())
 
     def motion_valid(self, qa: np.ndarray, qb: np.ndarray) -> bool:
         """True when every sample of the straight motion qa→qb is collision-free (qa assumed free)."""
