@@ -13,7 +13,6 @@ import math
 
 import numpy as np
 
-
 #: How far a covering sphere may reach beyond the face nearest its centre, before the
 #: surface sampling gap is added, m. Thinner is a tighter model with more spheres.
 COVER_BULGE = 0.008

@@ -285,9 +285,9 @@ def _touches_obstacle(
         i = int(np.rint((c[0] - field_lo[0]) / h))
         j = int(np.rint((c[1] - field_lo[1]) / h))
         k = int(np.rint((c[2] - field_lo[2]) / h))
-        if 0 <= i < nx and 0 <= j < ny and 0 <= k < nz:
-            if field[i, j, k] > r + field_spec[1] + EPS:
-                return False
+        inside = 0 <= i < nx and 0 <= j < ny and 0 <= k < nz
+        if inside and field[i, j, k] > r + field_spec[1] + EPS:
+            return False
     return _obstacle_hit(
         c, r, obs_sphere_c, obs_sphere_r, box_R, box_off, box_h, cyl_R, cyl_off, cyl_rh
     )

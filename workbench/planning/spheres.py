@@ -37,8 +37,8 @@ from workbench.planning import sphere_kernel
 from workbench.planning.collision import CollisionWorld, JointMap
 from workbench.planning.obstacles import ObstacleSet
 from workbench.planning.sphere_cover import cover_shape, load_sphere_model  # noqa: F401
-from workbench.planning.sphere_layout import build_layout
 from workbench.planning.sphere_kernel import EPS as _EPS
+from workbench.planning.sphere_layout import build_layout
 
 
 def _transform(rigid) -> np.ndarray:
@@ -330,7 +330,9 @@ class SphereChecker:
         layout = self.layout
         by_slots: dict[tuple[int, int], list[int]] = {}
         for k, (pa, pb) in enumerate(self._pairs):
-            by_slots.setdefault((int(layout.part_slot[pa]), int(layout.part_slot[pb])), []).append(k)
+            by_slots.setdefault((int(layout.part_slot[pa]), int(layout.part_slot[pb])), []).append(
+                k
+            )
         for (sa, sb), ks in by_slots.items():
             between = sorted(self._slot_depends[sa] ^ self._slot_depends[sb])
             if not 1 <= len(between) <= 2:
