@@ -51,3 +51,13 @@ def planning_dir() -> Path:
 def mapping_dir() -> Path:
     """Worlds and saved maps (``mapping/``)."""
     return project_root() / "mapping"
+
+
+def cache_root() -> Path:
+    """Where workbench keeps what it can recompute (``$WORKBENCH_CACHE_DIR``, else
+    ``$XDG_CACHE_HOME/workbench``, else ``~/.cache/workbench``)."""
+    explicit = os.environ.get("WORKBENCH_CACHE_DIR")
+    if explicit:
+        return Path(explicit)
+    xdg = os.environ.get("XDG_CACHE_HOME")
+    return (Path(xdg) if xdg else Path.home() / ".cache") / "workbench"

@@ -126,3 +126,33 @@ def test_start_inside_the_sphere_margin_is_planned_with_exact_confirmation(arm3_
     result = arm3_planner.plan("q=0.5,0.3,0.5", start=q, seed=1)
     assert result.checks["exact_checks"] > 0
     independent_check(arm3_planner, result.trajectory)
+
+
+def test_spheres_first_only_where_their_space_is_open(robot_arm_planner, arm3_planner):  # noqa: F811
+    planner = robot_arm_planner
+    reach = 0.04 * float(np.linalg.norm(planner.upper - planner.lower))
+    rng = np.random.default_rng(3)
+    states = rng.uniform(planner.lower, planner.upper, size=(4000, len(planner.lower)))
+    free = planner.world.configs_free(planner.joints.full(states))
+    clear = planner.spheres.configs_free(states)
+    # a state clear of the spheres is open
+    assert planner._spheres_open(states[np.nonzero(clear & free)[0][0]], reach, 0)
+    # the small arm's links nearly touch in most poses: from a free state deep in that
+    # margin (no sphere-clear state around it), the spheres' space is closed
+    closed = [
+        q
+        for q in states[free & ~clear][:200]
+        if not planner.spheres.configs_free(
+            np.clip(
+                q + reach * rng.normal(size=(64, len(q))) / np.sqrt(len(q)),
+                planner.lower,
+                planner.upper,
+            )
+        ).any()
+    ]
+    assert closed, "expected free states deep inside the spheres' margin"
+    assert not planner._spheres_open(closed[0], reach, 0)
+    # and planning from there still succeeds, confirming sphere rejections exactly
+    result = planner.plan("random", start=closed[0], seed=2)
+    assert result.checks["exact_checks"] > 0
+    independent_check(planner, result.trajectory)

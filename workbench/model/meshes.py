@@ -26,13 +26,9 @@ class MeshError(ModelError):
 
 def cache_dir() -> Path:
     """The directory converted meshes are written to (created on demand)."""
-    explicit = os.environ.get("WORKBENCH_CACHE_DIR")
-    if explicit:
-        base = Path(explicit)
-    else:
-        xdg = os.environ.get("XDG_CACHE_HOME")
-        base = (Path(xdg) if xdg else Path.home() / ".cache") / "workbench"
-    return base / "meshes"
+    from workbench.paths import cache_root
+
+    return cache_root() / "meshes"
 
 
 def check_mesh(path: Path, *, where: Path | None = None, line: int | None = None) -> None:

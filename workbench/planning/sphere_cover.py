@@ -19,9 +19,10 @@ COVER_BULGE = 0.008
 #: Most spheres per shape: a thin or flat shape would need many small spheres, so its
 #: allowed bulge grows until it fits.
 MAX_SPHERES_PER_SHAPE = 160
-#: Surface samples per shape (each sphere grows by their spacing, so denser is tighter).
+#: Most surface samples per shape (each sphere grows by their spacing, so denser is
+#: tighter; a shape gets about one per (bulge / 4)^2 of its area).
 SURFACE_SAMPLES = 12000
-#: Candidate centres per shape, drawn uniformly inside it.
+#: Most candidate centres per shape, drawn uniformly inside it.
 CANDIDATES = 4000
 
 
@@ -51,24 +52,32 @@ def hull_vertices(shape) -> np.ndarray:
     return np.array([hull.vertex(i) for i in range(hull.num_vertices())], dtype=float)
 
 
-_HULL_COVERS: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
+#: Bumped whenever the cover algorithm changes, so stale covers on disk are ignored.
+COVER_VERSION = 1
 
 
 def _cached_hull_cover(points: np.ndarray, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
-    """Spheres covering the convex hull of ``points`` (cached: robots are rebuilt per scene)."""
-    key = (
-        points.shape,
-        points.round(9).tobytes(),
+    """Spheres covering the convex hull of ``points``, cached in the process and on disk
+    (:mod:`workbench.planning.array_cache`): a robot's covers are the same every run."""
+    from workbench.planning.array_cache import cached_arrays, digest
+
+    points = np.asarray(points, float)
+    settings = (
+        COVER_VERSION,
         seed,
         COVER_BULGE,
         MAX_SPHERES_PER_SHAPE,
         SURFACE_SAMPLES,
         CANDIDATES,
     )
-    if key not in _HULL_COVERS:
-        _HULL_COVERS[key] = _cover_hull(points, seed)
-    centres, radii = _HULL_COVERS[key]
-    return centres.copy(), radii.copy()
+    key = digest(points.round(9), settings)
+
+    def compute() -> dict[str, np.ndarray]:
+        centres, radii = _cover_hull(points, seed)
+        return {"centres": centres, "radii": radii}
+
+    stored = cached_arrays("sphere-covers", key, compute)
+    return stored["centres"].copy(), stored["radii"].copy()
 
 
 def _cover_hull(points: np.ndarray, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
@@ -95,34 +104,50 @@ def _cover_hull(points: np.ndarray, seed: int = 0) -> tuple[np.ndarray, np.ndarr
         return centre[None], np.array([np.linalg.norm(points - centre, axis=1).max()])
     hull = points[ConvexHull(points).vertices]
     mesh = trimesh.convex.convex_hull(hull)
-    surface, _ = trimesh.sample.sample_surface_even(mesh, SURFACE_SAMPLES, seed=seed)
+    # samples about a quarter of the bulge apart (fewer on small shapes, which a few
+    # spheres cover: the cover's cost grows with samples times candidates)
+    wanted = int(np.clip(mesh.area / (COVER_BULGE / 4) ** 2, 500, SURFACE_SAMPLES))
+    surface, _ = trimesh.sample.sample_surface_even(mesh, wanted, seed=seed)
     spacing = math.sqrt(max(mesh.area, 1e-12) / max(len(surface), 1))
+    count = int(np.clip(len(surface) // 3, 300, CANDIDATES))
+    interior_count = count // 4
     candidates = np.zeros((0, 3))
     for _ in range(20):  # rejection sampling; a hull fills at least a sliver of its box
-        sample = rng.uniform(lo, hi, size=(4 * CANDIDATES, 3))
+        sample = rng.uniform(lo, hi, size=(4 * count, 3))
         depth = -(sample @ equations[:, :3].T + equations[:, 3]).max(axis=1)
         candidates = np.vstack([candidates, sample[depth > 0]])
-        if len(candidates) >= CANDIDATES + 1000:
+        if len(candidates) >= count + interior_count:
             break
-    interior = candidates[CANDIDATES : CANDIDATES + 1000]
-    candidates = np.vstack([candidates[:CANDIDATES], hull.mean(axis=0)])
-    depth = np.maximum(-(candidates @ equations[:, :3].T + equations[:, 3]).max(axis=1), 0.0)
+    interior = candidates[count : count + interior_count]
+    centroid = hull.mean(axis=0)
     targets = np.vstack([hull, surface, interior])
+    # Points just inside the hull's vertices and some surface samples reach them within the
+    # bulge, so sharp corners and edges are covered without a sphere that bulges more.
+    edge = np.vstack([hull, surface[rng.choice(len(surface), min(count, len(surface)), False)]])
+    inward = centroid - edge
+    inward_length = np.linalg.norm(inward, axis=1, keepdims=True)
+    inward /= np.maximum(inward_length, 1e-12)
     extent = float(np.linalg.norm(hi - lo))
     bulge = COVER_BULGE
     while True:
-        chosen, radii = _greedy_cover(targets, candidates, depth + bulge)
-        if len(chosen) <= MAX_SPHERES_PER_SHAPE or bulge > extent:
-            return candidates[chosen], radii + spacing
+        near_edge = edge + inward * np.minimum(0.9 * bulge, 0.5 * inward_length)
+        centres = np.vstack([candidates[:count], centroid, near_edge])
+        depth = np.maximum(-(centres @ equations[:, :3].T + equations[:, 3]).max(axis=1), 0.0)
+        limit = MAX_SPHERES_PER_SHAPE if bulge <= extent else len(centres)
+        cover = _greedy_cover(targets, centres, depth + bulge, limit)
+        if cover is not None:
+            chosen, radii = cover
+            return centres[chosen], radii + spacing
         bulge *= 2
 
 
 def _greedy_cover(
-    targets: np.ndarray, centres: np.ndarray, reach: np.ndarray
-) -> tuple[np.ndarray, np.ndarray]:
+    targets: np.ndarray, centres: np.ndarray, reach: np.ndarray, limit: int
+) -> tuple[np.ndarray, np.ndarray] | None:
     """Greedy set cover of ``targets`` by balls (centres, reach): chosen indices and radii.
 
     A target no ball reaches is covered by growing the ball that misses it least.
+    Returns None as soon as more than ``limit`` balls would be needed.
     """
     from scipy.sparse import csr_matrix
     from scipy.spatial import cKDTree
@@ -149,9 +174,16 @@ def _greedy_cover(
             row = covers.indices[covers.indptr[k] : covers.indptr[k + 1]]
         new = row[uncovered[row]]
         chosen.append(k)
+        if len(chosen) > limit:
+            return None
         uncovered[new] = False
         if len(new):
-            counts -= np.bincount(covered_by[new].indices, minlength=len(counts))
+            # every ball covering a newly covered target now covers one fewer uncovered
+            starts, ends = covered_by.indptr[new], covered_by.indptr[new + 1]
+            lengths = ends - starts
+            offsets = np.arange(lengths.sum()) - np.repeat(np.cumsum(lengths) - lengths, lengths)
+            balls = covered_by.indices[np.repeat(starts, lengths) + offsets]
+            counts -= np.bincount(balls, minlength=len(counts))
         counts[k] = 0
     index = np.array(chosen, dtype=int)
     return index, reach[index]

@@ -1,20 +1,25 @@
 """A sphere model of the robot, checked against the scene for many configurations at once.
 
 Planning spends nearly all its time asking "is this configuration free?".
-:class:`SphereChecker` answers it for a whole batch (every step of an edge) in
-a few vectorised numpy operations:
+:class:`SphereChecker` answers it with a sphere model of the robot:
 
-* every collision shape of every robot body is covered by spheres (boxes and
-  cylinders by a grid of cells, each enclosed by a sphere; meshes — which Drake
-  checks as their convex hulls — by k-means clusters of the hull's vertices and
-  surface samples, each sphere enclosing its cluster plus the sample spacing),
-  so the model over-approximates the robot;
-* forward kinematics of the planning group's joints is evaluated for all
-  configurations at once (4x4 transforms, batch on the first axis);
+* every collision shape of every robot body is covered by spheres centred deep
+  inside it that bulge out of its surface by about a centimetre (boxes,
+  cylinders and meshes — which Drake checks as their convex hulls — through
+  :func:`~workbench.planning.sphere_cover.cover_shape`), so the model
+  over-approximates the robot;
+* the spheres are grouped per body into small clusters with bounding spheres
+  (:mod:`workbench.planning.sphere_layout`), so a check descends to single
+  spheres only near an obstacle or another link;
+* forward kinematics of the planning group's joints is a Rodrigues step per
+  joint (batched in numpy for the reference, one loop in the compiled kernel);
 * spheres are tested against the scene's primitives (sphere, box, cylinder;
   meshes by their bounding box) and against each other for the body pairs
   the exact checker does not filter (SRDF disabled pairs, adjacent and welded
-  bodies, and pairs whose relative pose the group's joints cannot change).
+  bodies, and pairs whose relative pose the group's joints cannot change);
+  body pairs that sit close together in many poses also get a table of their
+  exact distance over the (at most two) joints between them, which clears
+  them where the spheres cannot.
 
 Because the spheres cover the geometry, a configuration the sphere model
 accepts is free for the exact geometry too; the planner still re-checks the
@@ -30,6 +35,7 @@ from __future__ import annotations
 
 import math
 import time
+from pathlib import Path
 
 import numpy as np
 
@@ -344,11 +350,38 @@ class SphereChecker:
                 overlap |= (d2 < (self.radii[a, None] + self.radii[None, b]) ** 2).any(axis=(1, 2))
             if overlap.mean() < 0.2:
                 continue
-            key = (str(self.world.robot_path), tuple(self.joints.names), sa, sb, grid_step)
-            if key not in _PAIR_GRIDS:
-                _PAIR_GRIDS[key] = self._pair_grid(sa, sb, between, lo, hi, grid_step)
             self._pair_grid_index[ks] = len(self._grid_list)
-            self._grid_list.append(_PAIR_GRIDS[key])
+            self._grid_list.append(self._cached_pair_grid(sa, sb, between, lo, hi, grid_step))
+
+    def _cached_pair_grid(self, sa: int, sb: int, between: list[int], lo, hi, step: float):
+        """:meth:`_pair_grid`, kept on disk (:mod:`workbench.planning.array_cache`) under a
+        digest of what it depends on: the robot file, the collision filter, the group and
+        the fixed joints' values, both bodies' names and sphere covers, and the grid."""
+        from workbench.planning.array_cache import cached_arrays, digest
+
+        robot_text = Path(self.world.robot_path).read_bytes() if self.world.robot_path else b""
+        own = [np.nonzero(self.owner_slot == k)[0] for k in (sa, sb)]
+        key = digest(
+            robot_text,
+            np.asarray(self.world.checker.GetFilteredCollisionMatrix()),
+            tuple(self.joints.names),
+            np.asarray(self.joints.base, float),
+            sorted(self._slot_bodies[sa]),
+            sorted(self._slot_bodies[sb]),
+            *(np.round(self.local[i], 9) for i in own),
+            *(np.round(self.radii[i], 9) for i in own),
+            tuple(between),
+            np.asarray(lo, float),
+            np.asarray(hi, float),
+            step,
+        )
+
+        def compute() -> dict[str, np.ndarray]:
+            joints, origin, _, table, reach = self._pair_grid(sa, sb, between, lo, hi, step)
+            return {"joints": joints, "origin": origin, "table": table, "reach": np.array(reach)}
+
+        grid = cached_arrays("pair-distance-tables", key, compute)
+        return grid["joints"], grid["origin"], step, grid["table"], float(grid["reach"])
 
     def _pair_grid(self, sa: int, sb: int, between: list[int], lo, hi, step: float):
         names_a, names_b = set(self._slot_bodies[sa]), set(self._slot_bodies[sb])
@@ -497,9 +530,6 @@ _KERNEL_LOAD: list[float] = []
 def kernel_load_seconds() -> float:
     """Seconds the compiled kernel took to compile or load in this process (0 before use)."""
     return max(_KERNEL_LOAD, default=0.0)
-
-
-_PAIR_GRIDS: dict[tuple, tuple] = {}
 
 
 def _bisection_order(n: int) -> np.ndarray:
