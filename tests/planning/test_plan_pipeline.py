@@ -156,3 +156,16 @@ def test_spheres_first_only_where_their_space_is_open(robot_arm_planner, arm3_pl
     result = planner.plan("random", start=closed[0], seed=2)
     assert result.checks["exact_checks"] > 0
     independent_check(planner, result.trajectory)
+
+
+def test_sphere_fidelity_decides_where_to_plan_first(robot_arm_planner, arm3_planner):  # noqa: F811
+    from workbench.planning.pipeline import MIN_FIDELITY
+
+    # arm3's spheres keep nearly all of its free space; robot_arm's links nearly touch in
+    # most poses, so its spheres keep little of it and it plans with exact confirmation
+    assert arm3_planner.sphere_fidelity > 0.9
+    assert robot_arm_planner.sphere_fidelity < MIN_FIDELITY
+    q = robot_arm_planner.default_start()
+    result = robot_arm_planner.plan("random", start=q, seed=4)
+    assert result.checks["exact_checks"] > 0
+    independent_check(robot_arm_planner, result.trajectory)

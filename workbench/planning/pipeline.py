@@ -53,6 +53,11 @@ SPHERES_SHARE = 0.75
 #: be worth planning in first.
 ESCAPE_SAMPLES = 32
 ESCAPE_SHARE = 0.25
+#: Random states whose sphere and exact answers measure how much of the free space the
+#: sphere model keeps, and the least share for planning in the spheres' space first (the
+#: Panda keeps about 0.9 of it; a small arm whose links nearly touch in most poses, 0.2).
+FIDELITY_SAMPLES = 200
+MIN_FIDELITY = 0.5
 
 
 @dataclass
@@ -153,6 +158,7 @@ class MotionPlanner:
         self.step = float(edge_step) if edge_step else self.recheck_step
         self.spheres = SphereChecker(self.world, self.joints) if use_spheres else None
         self.validity = Validity(self.world, self.joints, self.step, self.spheres)
+        self.sphere_fidelity = self._sphere_fidelity() if self.spheres is not None else 0.0
         # toppra's first import takes about a second (it loads matplotlib): pay it here,
         # not inside the first plan's timing.
         require("toppra.algorithm")
@@ -221,6 +227,15 @@ class MotionPlanner:
                 q_seed=start,
             )
         raise GoalError(f"unsupported goal {goal!r}")
+
+    def _sphere_fidelity(self) -> float:
+        """Share of the free space (over seeded random states) the sphere model keeps free."""
+        rng = np.random.default_rng(0)
+        states = rng.uniform(self.lower, self.upper, size=(FIDELITY_SAMPLES, len(self.lower)))
+        free = np.asarray(self.world.configs_free(self.joints.full(states)), dtype=bool)
+        if not free.any():
+            return 0.0
+        return float(np.mean(self.spheres.configs_free(states[free])))
 
     def _spheres_open(self, q: np.ndarray, reach: float, seed: int) -> bool:
         """Whether the spheres' free space is open around ``q`` (a start or goal).
@@ -308,14 +323,17 @@ class MotionPlanner:
             planner_range = RANGE_FRACTION * float(np.linalg.norm(self.upper - self.lower))
         # Plan in the spheres' free space first (fast, conservative; a start or goal inside
         # the spheres' margin is confirmed exactly, and so are the samples leading out of it)
-        # when that space is open around the start and goal; if that finds nothing in its
-        # share of the time, confirm every sphere rejection exactly for the rest (the exact
-        # free space, slower). The whole search never takes longer than the time limit.
+        # when the model keeps most of the free space and that space is open around the
+        # start and goal; if that finds nothing in its share of the time, confirm every
+        # sphere rejection exactly for the rest (the exact free space, slower). The whole
+        # search never takes longer than the time limit.
         spheres = self.spheres
         if spheres is None:
             attempts = [(self.step, False, 1.0, None)]
-        elif self._spheres_open(q_start, planner_range, seed) and self._spheres_open(
-            q_goal, planner_range, seed + 1
+        elif (
+            self.sphere_fidelity >= MIN_FIDELITY
+            and self._spheres_open(q_start, planner_range, seed)
+            and self._spheres_open(q_goal, planner_range, seed + 1)
         ):
             attempts = [(self.step, False, SPHERES_SHARE, spheres), (self.step, True, 1.0, spheres)]
         else:
