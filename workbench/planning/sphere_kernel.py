@@ -75,6 +75,10 @@ FIELDS = (
     ("pair_grid", "i", 1),  # (K,) int64 the pair's distance table, -1 for none
 )
 
+# _config_free slices the model tuple at these fields
+assert [f[0] for f in FIELDS].index("has_field") == 16
+assert [f[0] for f in FIELDS].index("grid_joints") == 28
+
 
 @njit(cache=True, nogil=True, inline="always")
 def _view1(buf, meta, k):
@@ -261,24 +265,26 @@ def _obstacle_hit(
     return False
 
 
-@njit(cache=True, nogil=True)
-def _touches_obstacle(
-    c,
-    r,
-    has_field,
-    field,
-    field_lo,
-    field_spec,
-    obs_sphere_c,
-    obs_sphere_r,
-    box_R,
-    box_off,
-    box_h,
-    cyl_R,
-    cyl_off,
-    cyl_rh,
-) -> bool:
-    """Whether the sphere (c, r) may touch an obstacle: the table first, then the primitives."""
+@njit(cache=True, nogil=True, inline="always")
+def _touches_obstacle(c, r, obstacles) -> bool:
+    """Whether the sphere (c, r) may touch an obstacle: the table first, then the primitives.
+
+    ``obstacles``: the fields from ``has_field`` to ``cyl_rh`` of :data:`FIELDS`.
+    """
+    (
+        has_field,
+        field,
+        field_lo,
+        field_spec,
+        obs_sphere_c,
+        obs_sphere_r,
+        box_R,
+        box_off,
+        box_h,
+        cyl_R,
+        cyl_off,
+        cyl_rh,
+    ) = obstacles
     if has_field[0]:
         nx, ny, nz = field.shape
         h = field_spec[0]
@@ -338,18 +344,9 @@ def _config_free(q, work, data) -> bool:
         part_r,
         part_span,
         env_parts,
-        has_field,
-        field,
-        field_lo,
-        field_spec,
-        obs_sphere_c,
-        obs_sphere_r,
-        box_R,
-        box_off,
-        box_h,
-        cyl_R,
-        cyl_off,
-        cyl_rh,
+    ) = data[:16]
+    obstacles = data[16:28]  # has_field ... cyl_rh
+    (
         grid_joints,
         grid_origin,
         grid_shape,
@@ -359,7 +356,7 @@ def _config_free(q, work, data) -> bool:
         pair_parts,
         pair_reach2,
         pair_grid,
-    ) = data
+    ) = data[28:]
     X, C, CC, PC, cl_mark, sphere_mark, part_mark, tick = work
     tick[0] += 1
     t = tick[0]
@@ -369,27 +366,18 @@ def _config_free(q, work, data) -> bool:
         p = env_parts[e]
         _apply(X, part_slot[p], part_local[p], PC[p])
         part_mark[p] = t
-        if not _touches_obstacle(
-            PC[p], part_r[p], has_field, field, field_lo, field_spec, obs_sphere_c,
-            obs_sphere_r, box_R, box_off, box_h, cyl_R, cyl_off, cyl_rh,
-        ):  # fmt: skip
+        if not _touches_obstacle(PC[p], part_r[p], obstacles):
             continue
         for k in range(part_span[p, 0], part_span[p, 1]):
             _apply(X, cl_slot[k], cl_local[k], CC[k])
             cl_mark[k] = t
-            if not _touches_obstacle(
-                CC[k], cl_r[k], has_field, field, field_lo, field_spec, obs_sphere_c,
-                obs_sphere_r, box_R, box_off, box_h, cyl_R, cyl_off, cyl_rh,
-            ):  # fmt: skip
+            if not _touches_obstacle(CC[k], cl_r[k], obstacles):
                 continue
             for s in range(cl_span[k, 0], cl_span[k, 1]):
                 _apply(X, cl_slot[k], local[s], C[s])
             sphere_mark[k] = t
             for s in range(cl_span[k, 0], cl_span[k, 1]):
-                if _touches_obstacle(
-                    C[s], radii[s], has_field, field, field_lo, field_spec, obs_sphere_c,
-                    obs_sphere_r, box_R, box_off, box_h, cyl_R, cyl_off, cyl_rh,
-                ):  # fmt: skip
+                if _touches_obstacle(C[s], radii[s], obstacles):
                     return False
     # self-collision: body pairs, their clusters, their spheres
     for k in range(len(pair_parts)):
