@@ -45,13 +45,28 @@ def port_open(host: str, port: int, timeout: float = 0.5) -> bool:
         return False
 
 
+#: Microseconds a message that must not be dropped may wait for room in a link's queue
+#: before Zenoh gives up and closes the link (losing what is queued). Zenoh's default, 5 s,
+#: is shorter than a subscriber on a busy 2-core machine can stall; dead peers are still
+#: found by the lease (10 s).
+BLOCK_WAIT_BEFORE_CLOSE_US = 120_000_000
+
+
+def _lossless(config):
+    config.insert_json5(
+        "transport/link/tx/queue/congestion_control/block/wait_before_close",
+        str(BLOCK_WAIT_BEFORE_CLOSE_US),
+    )
+    return config
+
+
 def client_config(uri: str):
     zenoh = zenoh_module()
     config = zenoh.Config()
     config.insert_json5("mode", '"client"')
     config.insert_json5("connect/endpoints", json.dumps([uri]))
     config.insert_json5("scouting/multicast/enabled", "false")
-    return config
+    return _lossless(config)
 
 
 def router_config(uri: str):
@@ -62,4 +77,4 @@ def router_config(uri: str):
     config.insert_json5("connect/endpoints", "[]")
     config.insert_json5("scouting/multicast/enabled", "false")
     config.insert_json5("scouting/gossip/enabled", "false")
-    return config
+    return _lossless(config)
