@@ -94,7 +94,6 @@ class ObstacleSet:
         self.field_lo = np.asarray(lo, float)
         self.field_h = float(spacing)
         counts = np.maximum(1, np.ceil((np.asarray(hi) - self.field_lo) / spacing).astype(int) + 1)
-        self.field_counts = counts
         axes = [self.field_lo[i] + spacing * np.arange(counts[i]) for i in range(3)]
         field = np.empty(tuple(counts), dtype=np.float32)
         gy, gz = np.meshgrid(axes[1], axes[2], indexing="ij")
@@ -104,16 +103,6 @@ class ObstacleSet:
             field[i] = self.distance(plane).reshape(gy.shape)
         self.field = field
         self.field_slack = float(np.sqrt(3.0) * spacing / 2)
-
-    def near(self, centres: np.ndarray, radii: np.ndarray) -> np.ndarray:
-        """Spheres the distance table cannot clear (or outside it); (M,) bool."""
-        if getattr(self, "field", None) is None:
-            return np.ones(len(centres), dtype=bool)
-        index = np.rint((centres - self.field_lo) / self.field_h).astype(np.intp)
-        outside = np.any((index < 0) | (index >= self.field_counts), axis=1)
-        np.clip(index, 0, self.field_counts - 1, out=index)
-        d = self.field[index[:, 0], index[:, 1], index[:, 2]]
-        return outside | (d <= radii + self.field_slack)
 
     def hit(self, centres: np.ndarray, radii: np.ndarray) -> np.ndarray:
         """Which spheres (centres (M, 3), radii (M,)) touch any obstacle; (M,) bool."""

@@ -157,7 +157,6 @@ class MotionPlanner:
         self.recheck_step = float(config.edge_resolution)
         self.step = float(edge_step) if edge_step else self.recheck_step
         self.spheres = SphereChecker(self.world, self.joints) if use_spheres else None
-        self.validity = Validity(self.world, self.joints, self.step, self.spheres)
         self.sphere_fidelity = self._sphere_fidelity() if self.spheres is not None else 0.0
         # toppra's first import takes about a second (it loads matplotlib): pay it here,
         # not inside the first plan's timing.

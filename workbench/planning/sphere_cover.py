@@ -4,7 +4,8 @@ Each function returns sphere centres (k, 3) in the shape's own frame and radii
 (k,) in metres whose union contains the shape. Boxes, cylinders (through the
 prism circumscribing them) and meshes (through their convex hulls, which Drake
 checks) are covered by :func:`_cover_hull`: spheres centred deep inside that
-bulge out of the surface by about :data:`COVER_BULGE`. :func:`load_sphere_model` reads hand-made decompositions instead.
+bulge out of the surface by about :data:`COVER_BULGE`. :func:`load_sphere_model`
+reads hand-made decompositions instead.
 """
 
 from __future__ import annotations
@@ -98,11 +99,12 @@ def _cover_hull(points: np.ndarray, seed: int = 0) -> tuple[np.ndarray, np.ndarr
     points = np.asarray(points, float)
     lo, hi = points.min(axis=0), points.max(axis=0)
     try:
-        equations = ConvexHull(points).equations
+        convex = ConvexHull(points)
     except QhullError:  # flat or degenerate: one sphere around its bounding box
         centre = (lo + hi) / 2
         return centre[None], np.array([np.linalg.norm(points - centre, axis=1).max()])
-    hull = points[ConvexHull(points).vertices]
+    equations = convex.equations
+    hull = points[convex.vertices]
     mesh = trimesh.convex.convex_hull(hull)
     # samples about a quarter of the bulge apart (fewer on small shapes, which a few
     # spheres cover: the cover's cost grows with samples times candidates)

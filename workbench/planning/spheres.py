@@ -325,7 +325,7 @@ class SphereChecker:
         exact signed distance is tabulated over those joints every ``grid_step`` rad;
         a configuration whose nearest table entry exceeds what the joints' half-step
         can change it by is free for that pair, and the spheres decide otherwise.
-        Tables depend on the robot only and are cached per process.
+        Tables depend on the robot only and are kept on disk (:meth:`_cached_pair_grid`).
         """
         if not len(self._pairs):
             return
@@ -345,9 +345,7 @@ class SphereChecker:
                 continue
             overlap = np.zeros(samples, dtype=bool)
             for k in ks:
-                a, b = (self._part_spheres[p] for p in self._pairs[k])
-                d2 = ((centres[:, a, None] - centres[:, None, b]) ** 2).sum(-1)
-                overlap |= (d2 < (self.radii[a, None] + self.radii[None, b]) ** 2).any(axis=(1, 2))
+                overlap |= self._parts_touch(centres, *self._pairs[k])
             if overlap.mean() < 0.2:
                 continue
             self._pair_grid_index[ks] = len(self._grid_list)
@@ -503,9 +501,7 @@ class SphereChecker:
             hits = self.obstacles.hit(centres[:, env].reshape(-1, 3), np.tile(self.radii[env], n))
             bad |= hits.reshape(n, len(env)).any(axis=1)
         for k, (pa, pb) in enumerate(self._pairs):
-            a, b = self._part_spheres[pa], self._part_spheres[pb]
-            d2 = ((centres[:, a, None] - centres[:, None, b]) ** 2).sum(-1)
-            touch = (d2 < (self.radii[a, None] + self.radii[None, b]) ** 2).any(axis=(1, 2))
+            touch = self._parts_touch(centres, pa, pb)
             g = self._pair_grid_index[k]
             if g >= 0:
                 between, origin, step, table, margin = self._grid_list[g]
@@ -514,6 +510,15 @@ class SphereChecker:
                 touch &= ~(table[tuple(index.T)] > margin)
             bad |= touch
         return ~bad
+
+    def _parts_touch(self, centres: np.ndarray, pa: int, pb: int) -> np.ndarray:
+        """Whether any sphere of body part ``pa`` touches one of ``pb``, per configuration.
+
+        ``centres``: (N, S, 3) from :meth:`sphere_centres`; returns (N,) bool.
+        """
+        a, b = self._part_spheres[pa], self._part_spheres[pb]
+        d2 = ((centres[:, a, None] - centres[:, None, b]) ** 2).sum(-1)
+        return (d2 < (self.radii[a, None] + self.radii[None, b]) ** 2).any(axis=(1, 2))
 
     def edge_samples(self, qa: np.ndarray, qb: np.ndarray, step: float) -> np.ndarray:
         """Configurations on the segment qa→qb every ``step`` (max-norm), coarse to fine."""
