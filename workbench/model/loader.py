@@ -237,7 +237,7 @@ def load_robot(
             if document is not None:
                 instances = parser.AddModelsFromString(text, "urdf")
             else:
-                instances = parser.AddModels(str(path))
+                instances = parser.AddModels(str(path))  # type: ignore[arg-type]
     except RuntimeError as error:
         raise _drake_error(error, path, document) from None
     if not instances:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import hashlib
 import os
 from pathlib import Path
+from typing import Any
 
 from workbench.errors import ModelError
 
@@ -68,7 +69,7 @@ def prepare_mesh(path: Path, *, where: Path | None = None, line: int | None = No
     try:
         import trimesh
 
-        mesh = trimesh.load(str(path), force="mesh")
+        mesh: Any = trimesh.load(str(path), force="mesh")  # a Trimesh with force="mesh"
         if len(mesh.faces) == 0:
             raise ValueError("the mesh has no triangles")
         target.parent.mkdir(parents=True, exist_ok=True)

@@ -204,7 +204,7 @@ class Robot:
             q[names.index(name)] = float(value)
         return q
 
-    def set_positions(self, context, q: Sequence[float]) -> None:
+    def set_positions(self, context, q: Sequence[float] | np.ndarray) -> None:
         """Write the movable-joint positions ``q`` into a plant context."""
         values = np.asarray(q, dtype=float).ravel()
         plant_joints = self._plant_joints()

@@ -137,7 +137,9 @@ def deserialize(data: bytes | bytearray | memoryview, typename: str) -> Message:
     types = store()
     cls = types.message_class(typename)
     try:
-        return types.ts.deserialize_ros1(data, cls.__msgtype__)
+        # The typestore declares bytes | memoryview and returns object; a bytearray works too.
+        message: Message = types.ts.deserialize_ros1(data, cls.__msgtype__)  # type: ignore[arg-type, assignment]
+        return message
     except Exception as error:
         raise MessageError(
             f"{len(data)} bytes are not a valid {cls._type}: {error}",

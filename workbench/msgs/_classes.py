@@ -9,7 +9,7 @@ field, the message type and what the field accepts.
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 
@@ -46,7 +46,7 @@ class Message:
     ``_slot_types`` (their ROS 1 types).
     """
 
-    __slots__ = ()
+    __slots__: ClassVar[tuple[str, ...]] = ()
     _type: ClassVar[str] = ""
     __msgtype__: ClassVar[str] = ""
     _has_header: ClassVar[bool] = False
@@ -81,24 +81,28 @@ class Message:
             name = next(iter(kwargs))
             raise _unknown_field(cls, name)
 
-    def __setattr__(self, name: str, value: Any) -> None:
-        check = self._checkers.get(name)
-        if check is None:
-            raise _unknown_field(type(self), name)
-        try:
-            value = check(value)
-        except BadValue as bad:
-            spec = next(s for s in self._specs if s.name == name)
-            raise FieldTypeError(
-                f"field '{name}' of {self._type} is {spec.ros_type} and needs "
-                f"{bad.expected}; got {_describe(value)}"
-            ) from None
-        object.__setattr__(self, name, value)
+    # Hidden from type checkers: the generated stubs (workbench/msgs/*.pyi) declare each
+    # class's fields, and an unknown field must be a type error there, not ``Any``.
+    if not TYPE_CHECKING:
 
-    def __getattr__(self, name: str) -> Any:
-        if name.startswith("__"):
-            raise AttributeError(name)
-        raise _unknown_field(type(self), name)
+        def __setattr__(self, name: str, value: Any) -> None:
+            check = self._checkers.get(name)
+            if check is None:
+                raise _unknown_field(type(self), name)
+            try:
+                value = check(value)
+            except BadValue as bad:
+                spec = next(s for s in self._specs if s.name == name)
+                raise FieldTypeError(
+                    f"field '{name}' of {self._type} is {spec.ros_type} and needs "
+                    f"{bad.expected}; got {_describe(value)}"
+                ) from None
+            object.__setattr__(self, name, value)
+
+        def __getattr__(self, name: str) -> Any:
+            if name.startswith("__"):
+                raise AttributeError(name)
+            raise _unknown_field(type(self), name)
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Message) or other.__msgtype__ != self.__msgtype__:
@@ -252,7 +256,7 @@ def make_class(
     }
     for const_name, _const_type, value in constants:
         namespace[const_name] = value
-    cls = type(name, bases, namespace)
+    cls: type[Message] = type(name, bases, namespace)
     cls._from_wire = _wire_constructor(cls)  # type: ignore[method-assign]
     return cls
 

@@ -175,6 +175,7 @@ class TypeStore:
         """The text ROS hashes for a type (nested types replaced by their md5sums)."""
         constants, fields = self.ts.fielddefs[store_name]
         lines = [f"{typ} {name}={value}" for name, typ, value in constants]
+        desc: Any  # the typestore's nested field descriptions (node type, details)
         special = {_TIME: "time", _DURATION: "duration"}
         for name, desc in fields:
             if name == "structure_needs_at_least_one_member":

@@ -60,7 +60,7 @@ class _TimeBase:
 
     def __setattr__(self, name: str, value: Any) -> None:
         name = {"secs": "sec", "nsecs": "nanosec"}.get(name, name)
-        super().__setattr__(name, value)  # type: ignore[misc]
+        super().__setattr__(name, value)
 
     @property
     def secs(self) -> int:

@@ -403,7 +403,8 @@ class BufferCore:
         walk) it stops at the first frame in ``visited``. Also stops at a root or at
         a link without data at ``t``. Returns ``(frame reached, accumulated, error)``.
         """
-        caches = self._caches
+        # Any: the loop tells TimeCache from StaticCache by ``cache.static``, not isinstance.
+        caches: list[Any] = self._caches
         record = goal >= 0
         tx = ty = tz = qx = qy = qz = 0.0
         qw = 1.0

@@ -76,7 +76,7 @@ def _axes(axes: str | Sequence[int]) -> tuple[str, tuple[int, int, int, int]]:
     tup = tuple(int(v) for v in axes)
     if tup not in _TUPLE2AXES:
         raise InvalidArgumentException(f"unknown Euler axes tuple {axes!r}")
-    return _TUPLE2AXES[tup], tup  # type: ignore[return-value]
+    return _TUPLE2AXES[tup], tup
 
 
 def _scipy_sequence(axes: str) -> str:
@@ -85,7 +85,7 @@ def _scipy_sequence(axes: str) -> str:
     return axes[1:] if axes[0] == "s" else axes[1:].upper()
 
 
-def _rotation(quaternion: Sequence[float]) -> Any:
+def _rotation(quaternion: Sequence[float] | np.ndarray) -> Any:
     from scipy.spatial.transform import Rotation
 
     return Rotation.from_quat(np.asarray(quaternion, dtype=float)[:4])
@@ -99,7 +99,7 @@ def identity_matrix() -> np.ndarray:
     return np.identity(4)
 
 
-def translation_matrix(direction: Sequence[float]) -> np.ndarray:
+def translation_matrix(direction: Sequence[float] | np.ndarray) -> np.ndarray:
     """A 4x4 matrix translating by ``direction`` (metres)."""
     m = np.identity(4)
     m[:3, 3] = np.asarray(direction, dtype=float)[:3]
@@ -111,7 +111,9 @@ def translation_from_matrix(matrix: Any) -> np.ndarray:
     return np.array(matrix, dtype=float, copy=True)[:3, 3].copy()
 
 
-def rotation_matrix(angle: float, direction: Sequence[float], point: Any = None) -> np.ndarray:
+def rotation_matrix(
+    angle: float, direction: Sequence[float] | np.ndarray, point: Any = None
+) -> np.ndarray:
     """A 4x4 matrix rotating by ``angle`` (rad) about the axis ``direction`` through ``point``."""
     from scipy.spatial.transform import Rotation
 
@@ -209,7 +211,7 @@ def euler_from_matrix(
 
 
 def euler_from_quaternion(
-    quaternion: Sequence[float], axes: str | Sequence[int] = "sxyz"
+    quaternion: Sequence[float] | np.ndarray, axes: str | Sequence[int] = "sxyz"
 ) -> tuple[float, float, float]:
     """Euler angles (rad) of a quaternion ``[x, y, z, w]``: ``(roll, pitch, yaw)`` for ``'sxyz'``."""
     return euler_from_matrix(quaternion_matrix(quaternion), axes)
@@ -228,7 +230,7 @@ def quaternion_from_euler(
 # --- quaternions --------------------------------------------------------------------
 
 
-def quaternion_about_axis(angle: float, axis: Sequence[float]) -> np.ndarray:
+def quaternion_about_axis(angle: float, axis: Sequence[float] | np.ndarray) -> np.ndarray:
     """The quaternion ``[x, y, z, w]`` rotating by ``angle`` (rad) about ``axis``."""
     v = np.asarray(axis, dtype=float)[:3]
     n = vector_norm(v)
@@ -239,7 +241,7 @@ def quaternion_about_axis(angle: float, axis: Sequence[float]) -> np.ndarray:
     return q
 
 
-def quaternion_matrix(quaternion: Sequence[float]) -> np.ndarray:
+def quaternion_matrix(quaternion: Sequence[float] | np.ndarray) -> np.ndarray:
     """The 4x4 rotation matrix of a quaternion ``[x, y, z, w]`` (normalised first)."""
     q = np.asarray(quaternion, dtype=float)[:4]
     m = np.identity(4)
@@ -257,7 +259,9 @@ def quaternion_from_matrix(matrix: Any) -> np.ndarray:
     return Rotation.from_matrix(m).as_quat()
 
 
-def quaternion_multiply(quaternion1: Sequence[float], quaternion0: Sequence[float]) -> np.ndarray:
+def quaternion_multiply(
+    quaternion1: Sequence[float] | np.ndarray, quaternion0: Sequence[float] | np.ndarray
+) -> np.ndarray:
     """The Hamilton product ``quaternion1 * quaternion0`` (apply ``quaternion0`` first)."""
     x1, y1, z1, w1 = (float(v) for v in quaternion1[:4])
     x0, y0, z0, w0 = (float(v) for v in quaternion0[:4])
@@ -271,22 +275,22 @@ def quaternion_multiply(quaternion1: Sequence[float], quaternion0: Sequence[floa
     )
 
 
-def quaternion_conjugate(quaternion: Sequence[float]) -> np.ndarray:
+def quaternion_conjugate(quaternion: Sequence[float] | np.ndarray) -> np.ndarray:
     """``[-x, -y, -z, w]``."""
     q = np.array(quaternion, dtype=float)[:4]
     q[:3] *= -1.0
     return q
 
 
-def quaternion_inverse(quaternion: Sequence[float]) -> np.ndarray:
+def quaternion_inverse(quaternion: Sequence[float] | np.ndarray) -> np.ndarray:
     """The inverse ``conjugate / |q|^2``."""
     q = np.asarray(quaternion, dtype=float)[:4]
     return quaternion_conjugate(q) / np.dot(q, q)
 
 
 def quaternion_slerp(
-    quat0: Sequence[float],
-    quat1: Sequence[float],
+    quat0: Sequence[float] | np.ndarray,
+    quat1: Sequence[float] | np.ndarray,
     fraction: float,
     spin: int = 0,
     shortestpath: bool = True,
@@ -313,7 +317,7 @@ def quaternion_slerp(
     )
 
 
-def random_quaternion(rand: Sequence[float] | None = None) -> np.ndarray:
+def random_quaternion(rand: Sequence[float] | np.ndarray | None = None) -> np.ndarray:
     """A uniformly random unit quaternion; ``rand`` is three numbers in [0, 1).
 
     Without ``rand`` the numbers come from a module generator seeded with 0, so a
@@ -327,7 +331,7 @@ def random_quaternion(rand: Sequence[float] | None = None) -> np.ndarray:
     return np.array([math.sin(t1) * a, math.cos(t1) * a, math.sin(t2) * b, math.cos(t2) * b])
 
 
-def random_rotation_matrix(rand: Sequence[float] | None = None) -> np.ndarray:
+def random_rotation_matrix(rand: Sequence[float] | np.ndarray | None = None) -> np.ndarray:
     """A uniformly random 4x4 rotation matrix (see :func:`random_quaternion`)."""
     return quaternion_matrix(random_quaternion(rand))
 
