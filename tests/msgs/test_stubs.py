@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib.util
 import os
 import subprocess
 import sys
@@ -10,6 +11,14 @@ from pathlib import Path
 from workbench.msgs import _stubgen
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
+
+
+def require_mypy() -> None:
+    """Skip (fail under WORKBENCH_REQUIRE_ALL=1) when mypy, a test extra, is not installed."""
+    if importlib.util.find_spec("mypy") is None:
+        from conftest import skip_or_fail
+
+        skip_or_fail("mypy is not installed (it is in the test extra: pip install -e '.[test]')")
 
 
 def test_committed_stubs_equal_a_fresh_generation():
@@ -40,6 +49,7 @@ def test_stubs_declare_every_field_and_constant_the_classes_have():
 
 
 def _mypy(tmp_path: Path, source: str) -> subprocess.CompletedProcess[str]:
+    require_mypy()
     program = tmp_path / "program.py"
     program.write_text(source)
     env = dict(os.environ, MYPYPATH=str(REPO_ROOT))
