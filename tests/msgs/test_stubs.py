@@ -35,6 +35,29 @@ def test_every_package_module_has_a_stub():
     assert {p.stem for p in _stubgen.MSGS_DIR.glob("*.pyi")} == modules
 
 
+def test_each_stub_declares_exactly_the_classes_its_module_exports():
+    import ast
+    import importlib
+
+    for stub in sorted(_stubgen.MSGS_DIR.glob("*.pyi")):
+        module = importlib.import_module(f"workbench.msgs.{stub.stem}")
+        tree = ast.parse(stub.read_text(encoding="utf-8"))
+        classes = {node.name for node in tree.body if isinstance(node, ast.ClassDef)}
+        assert classes == set(module.__all__), stub.name
+        for cls in classes:  # every message field, in order, as the runtime class has them
+            runtime = getattr(module, cls)
+            if (
+                hasattr(runtime, "__slots__")
+                and runtime.__slots__
+                and stub.stem != "builtin_interfaces"
+            ):
+                node = next(n for n in tree.body if isinstance(n, ast.ClassDef) and n.name == cls)
+                init = next(
+                    f for f in node.body if isinstance(f, ast.FunctionDef) and f.name == "__init__"
+                )
+                assert [a.arg for a in init.args.args[1:]] == list(runtime.__slots__), cls
+
+
 def test_stubs_declare_every_field_and_constant_the_classes_have():
     from workbench.msgs import get_type
 
@@ -90,6 +113,9 @@ def test_mypy_accepts_what_the_classes_allow(tmp_path):
         "seconds: float = age.to_sec()\n"
         "name: str = Spawn.Request(x=1.0, y=2.0, name='t2').name\n"
         "kind: int = Marker.ARROW\n"
+        "from workbench.msgs import geometry_msgs, turtlesim\n"
+        "lab: float = geometry_msgs.msg.Twist().angular.z\n"
+        "spawn: turtlesim.SpawnRequest = turtlesim.srv.Spawn.Request(name='t3')\n"
         "reveal_type(state.position)\n",
     )
     assert result.returncode == 0, result.stdout + result.stderr

@@ -159,6 +159,7 @@ def render_package(package: str, packages: list[str], types: TypeStore) -> str:
         key=lambda svc: svc.__name__,
     )
     writer = _PackageWriter(package, packages, types)
+    writer.exported = sorted([cls.__name__ for cls in classes] + [svc.__name__ for svc in services])
     bodies = [writer.message(cls) for cls in classes]
     bodies += [writer.service(svc) for svc in services]
     return _HEADER.format(package=package) + writer.imports() + "".join(bodies)
@@ -175,6 +176,7 @@ class _PackageWriter:
         self.modules: set[str] = set()
         self.uses_numpy = False
         self.uses_service = False
+        self.exported: list[str] = []
 
     def imports(self) -> str:
         lines = ["\n"]
@@ -189,10 +191,18 @@ class _PackageWriter:
         lines.append("\n")
         if self.typing & {"Self"}:
             lines.append("from typing_extensions import Self\n\n")
+        # `geometry_msgs.msg.Twist` / `turtlesim.srv.Spawn`, as the lab's rospy scripts write them;
+        # the import statements in the order the project's import sorter keeps them.
+        names = [f"{self.package} as msg", f"{self.package} as srv"]
         if self.modules:
-            lines.append(f"from workbench.msgs import {', '.join(sorted(self.modules))}\n")
+            names.append(", ".join(sorted(self.modules)))
+        for imported in sorted(names):
+            lines.append(f"from workbench.msgs import {imported}\n")
         bases = ["Message"] + (["ServiceType"] if self.uses_service else [])
         lines.append(f"from workbench.msgs._classes import {', '.join(bases)}\n")
+        lines.append("\n__all__ = [\n")
+        lines += [f'    "{name}",\n' for name in [*self.exported, "msg", "srv"]]
+        lines.append("]\n")
         return "".join(lines)
 
     def message(self, cls: type[Message]) -> str:

@@ -5,8 +5,18 @@
 from collections.abc import Iterable, Mapping
 from typing import Any, Final
 
+from workbench.msgs import actionlib_msgs as msg
+from workbench.msgs import actionlib_msgs as srv
 from workbench.msgs import builtin_interfaces, std_msgs
 from workbench.msgs._classes import Message
+
+__all__ = [
+    "GoalID",
+    "GoalStatus",
+    "GoalStatusArray",
+    "msg",
+    "srv",
+]
 
 class GoalID(Message):
     """``actionlib_msgs/GoalID``."""

@@ -6,7 +6,16 @@ from typing import overload
 
 from typing_extensions import Self
 
+from workbench.msgs import builtin_interfaces as msg
+from workbench.msgs import builtin_interfaces as srv
 from workbench.msgs._classes import Message
+
+__all__ = [
+    "Duration",
+    "Time",
+    "msg",
+    "srv",
+]
 
 class Duration(Message):
     """A signed span of time (ROS 1 ``duration``)."""

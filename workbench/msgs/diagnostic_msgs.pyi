@@ -5,8 +5,18 @@
 from collections.abc import Iterable, Mapping
 from typing import Any, Final
 
+from workbench.msgs import diagnostic_msgs as msg
+from workbench.msgs import diagnostic_msgs as srv
 from workbench.msgs import std_msgs
 from workbench.msgs._classes import Message
+
+__all__ = [
+    "DiagnosticArray",
+    "DiagnosticStatus",
+    "KeyValue",
+    "msg",
+    "srv",
+]
 
 class DiagnosticArray(Message):
     """``diagnostic_msgs/DiagnosticArray``."""

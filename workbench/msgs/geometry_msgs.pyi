@@ -8,8 +8,44 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from workbench.msgs import geometry_msgs as msg
+from workbench.msgs import geometry_msgs as srv
 from workbench.msgs import std_msgs
 from workbench.msgs._classes import Message
+
+__all__ = [
+    "Accel",
+    "AccelStamped",
+    "AccelWithCovariance",
+    "AccelWithCovarianceStamped",
+    "Inertia",
+    "InertiaStamped",
+    "Point",
+    "Point32",
+    "PointStamped",
+    "Polygon",
+    "PolygonStamped",
+    "Pose",
+    "Pose2D",
+    "PoseArray",
+    "PoseStamped",
+    "PoseWithCovariance",
+    "PoseWithCovarianceStamped",
+    "Quaternion",
+    "QuaternionStamped",
+    "Transform",
+    "TransformStamped",
+    "Twist",
+    "TwistStamped",
+    "TwistWithCovariance",
+    "TwistWithCovarianceStamped",
+    "Vector3",
+    "Vector3Stamped",
+    "Wrench",
+    "WrenchStamped",
+    "msg",
+    "srv",
+]
 
 class Accel(Message):
     """``geometry_msgs/Accel``."""

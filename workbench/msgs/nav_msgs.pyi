@@ -9,7 +9,26 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.msgs import actionlib_msgs, builtin_interfaces, geometry_msgs, std_msgs
+from workbench.msgs import nav_msgs as msg
+from workbench.msgs import nav_msgs as srv
 from workbench.msgs._classes import Message
+
+__all__ = [
+    "GetMapAction",
+    "GetMapActionFeedback",
+    "GetMapActionGoal",
+    "GetMapActionResult",
+    "GetMapFeedback",
+    "GetMapGoal",
+    "GetMapResult",
+    "GridCells",
+    "MapMetaData",
+    "OccupancyGrid",
+    "Odometry",
+    "Path",
+    "msg",
+    "srv",
+]
 
 class GetMapAction(Message):
     """``nav_msgs/GetMapAction``."""

@@ -6,7 +6,17 @@ from collections.abc import Iterable, Mapping
 from typing import Any, Final
 
 from workbench.msgs import builtin_interfaces, std_msgs
+from workbench.msgs import rosgraph_msgs as msg
+from workbench.msgs import rosgraph_msgs as srv
 from workbench.msgs._classes import Message
+
+__all__ = [
+    "Clock",
+    "Log",
+    "TopicStatistics",
+    "msg",
+    "srv",
+]
 
 class Clock(Message):
     """``rosgraph_msgs/Clock``."""

@@ -4,7 +4,17 @@
 
 from typing import ClassVar
 
+from workbench.msgs import rospy_tutorials as msg
+from workbench.msgs import rospy_tutorials as srv
 from workbench.msgs._classes import Message, ServiceType
+
+__all__ = [
+    "AddTwoInts",
+    "AddTwoIntsRequest",
+    "AddTwoIntsResponse",
+    "msg",
+    "srv",
+]
 
 class AddTwoIntsRequest(Message):
     """``rospy_tutorials/AddTwoIntsRequest``."""

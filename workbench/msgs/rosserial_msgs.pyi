@@ -8,7 +8,19 @@ from typing import ClassVar, Final
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from workbench.msgs import rosserial_msgs as msg
+from workbench.msgs import rosserial_msgs as srv
 from workbench.msgs._classes import Message, ServiceType
+
+__all__ = [
+    "Log",
+    "RequestParam",
+    "RequestParamRequest",
+    "RequestParamResponse",
+    "TopicInfo",
+    "msg",
+    "srv",
+]
 
 class Log(Message):
     """``rosserial_msgs/Log``."""

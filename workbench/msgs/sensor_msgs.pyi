@@ -9,7 +9,41 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.msgs import builtin_interfaces, geometry_msgs, std_msgs
+from workbench.msgs import sensor_msgs as msg
+from workbench.msgs import sensor_msgs as srv
 from workbench.msgs._classes import Message
+
+__all__ = [
+    "BatteryState",
+    "CameraInfo",
+    "ChannelFloat32",
+    "CompressedImage",
+    "FluidPressure",
+    "Illuminance",
+    "Image",
+    "Imu",
+    "JointState",
+    "Joy",
+    "JoyFeedback",
+    "JoyFeedbackArray",
+    "LaserEcho",
+    "LaserScan",
+    "MagneticField",
+    "MultiDOFJointState",
+    "MultiEchoLaserScan",
+    "NavSatFix",
+    "NavSatStatus",
+    "PointCloud",
+    "PointCloud2",
+    "PointField",
+    "Range",
+    "RegionOfInterest",
+    "RelativeHumidity",
+    "Temperature",
+    "TimeReference",
+    "msg",
+    "srv",
+]
 
 class BatteryState(Message):
     """``sensor_msgs/BatteryState``."""

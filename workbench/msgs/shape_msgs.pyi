@@ -9,7 +9,18 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.msgs import geometry_msgs
+from workbench.msgs import shape_msgs as msg
+from workbench.msgs import shape_msgs as srv
 from workbench.msgs._classes import Message
+
+__all__ = [
+    "Mesh",
+    "MeshTriangle",
+    "Plane",
+    "SolidPrimitive",
+    "msg",
+    "srv",
+]
 
 class Mesh(Message):
     """``shape_msgs/Mesh``."""

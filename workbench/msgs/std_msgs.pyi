@@ -9,7 +9,46 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.msgs import builtin_interfaces
+from workbench.msgs import std_msgs as msg
+from workbench.msgs import std_msgs as srv
 from workbench.msgs._classes import Message
+
+__all__ = [
+    "Bool",
+    "Byte",
+    "ByteMultiArray",
+    "Char",
+    "ColorRGBA",
+    "Duration",
+    "Empty",
+    "Float32",
+    "Float32MultiArray",
+    "Float64",
+    "Float64MultiArray",
+    "Header",
+    "Int16",
+    "Int16MultiArray",
+    "Int32",
+    "Int32MultiArray",
+    "Int64",
+    "Int64MultiArray",
+    "Int8",
+    "Int8MultiArray",
+    "MultiArrayDimension",
+    "MultiArrayLayout",
+    "String",
+    "Time",
+    "UInt16",
+    "UInt16MultiArray",
+    "UInt32",
+    "UInt32MultiArray",
+    "UInt64",
+    "UInt64MultiArray",
+    "UInt8",
+    "UInt8MultiArray",
+    "msg",
+    "srv",
+]
 
 class Bool(Message):
     """``std_msgs/Bool``."""

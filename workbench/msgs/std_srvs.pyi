@@ -4,7 +4,23 @@
 
 from typing import ClassVar
 
+from workbench.msgs import std_srvs as msg
+from workbench.msgs import std_srvs as srv
 from workbench.msgs._classes import Message, ServiceType
+
+__all__ = [
+    "Empty",
+    "EmptyRequest",
+    "EmptyResponse",
+    "SetBool",
+    "SetBoolRequest",
+    "SetBoolResponse",
+    "Trigger",
+    "TriggerRequest",
+    "TriggerResponse",
+    "msg",
+    "srv",
+]
 
 class EmptyRequest(Message):
     """``std_srvs/EmptyRequest``."""

@@ -6,7 +6,15 @@ from collections.abc import Mapping
 from typing import Any
 
 from workbench.msgs import sensor_msgs, std_msgs
+from workbench.msgs import stereo_msgs as msg
+from workbench.msgs import stereo_msgs as srv
 from workbench.msgs._classes import Message
+
+__all__ = [
+    "DisparityImage",
+    "msg",
+    "srv",
+]
 
 class DisparityImage(Message):
     """``stereo_msgs/DisparityImage``."""

@@ -6,7 +6,15 @@ from collections.abc import Iterable, Mapping
 from typing import Any
 
 from workbench.msgs import geometry_msgs
+from workbench.msgs import tf2_msgs as msg
+from workbench.msgs import tf2_msgs as srv
 from workbench.msgs._classes import Message
+
+__all__ = [
+    "TFMessage",
+    "msg",
+    "srv",
+]
 
 class TFMessage(Message):
     """``tf2_msgs/TFMessage``."""

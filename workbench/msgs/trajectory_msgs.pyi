@@ -9,7 +9,18 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.msgs import builtin_interfaces, geometry_msgs, std_msgs
+from workbench.msgs import trajectory_msgs as msg
+from workbench.msgs import trajectory_msgs as srv
 from workbench.msgs._classes import Message
+
+__all__ = [
+    "JointTrajectory",
+    "JointTrajectoryPoint",
+    "MultiDOFJointTrajectory",
+    "MultiDOFJointTrajectoryPoint",
+    "msg",
+    "srv",
+]
 
 class JointTrajectory(Message):
     """``trajectory_msgs/JointTrajectory``."""

@@ -4,7 +4,31 @@
 
 from typing import ClassVar
 
+from workbench.msgs import turtlesim as msg
+from workbench.msgs import turtlesim as srv
 from workbench.msgs._classes import Message, ServiceType
+
+__all__ = [
+    "Color",
+    "Kill",
+    "KillRequest",
+    "KillResponse",
+    "Pose",
+    "SetPen",
+    "SetPenRequest",
+    "SetPenResponse",
+    "Spawn",
+    "SpawnRequest",
+    "SpawnResponse",
+    "TeleportAbsolute",
+    "TeleportAbsoluteRequest",
+    "TeleportAbsoluteResponse",
+    "TeleportRelative",
+    "TeleportRelativeRequest",
+    "TeleportRelativeResponse",
+    "msg",
+    "srv",
+]
 
 class Color(Message):
     """``turtlesim/Color``."""

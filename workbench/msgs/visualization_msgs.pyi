@@ -6,7 +6,24 @@ from collections.abc import Iterable, Mapping
 from typing import Any, Final
 
 from workbench.msgs import builtin_interfaces, geometry_msgs, std_msgs
+from workbench.msgs import visualization_msgs as msg
+from workbench.msgs import visualization_msgs as srv
 from workbench.msgs._classes import Message
+
+__all__ = [
+    "ImageMarker",
+    "InteractiveMarker",
+    "InteractiveMarkerControl",
+    "InteractiveMarkerFeedback",
+    "InteractiveMarkerInit",
+    "InteractiveMarkerPose",
+    "InteractiveMarkerUpdate",
+    "Marker",
+    "MarkerArray",
+    "MenuEntry",
+    "msg",
+    "srv",
+]
 
 class ImageMarker(Message):
     """``visualization_msgs/ImageMarker``."""
