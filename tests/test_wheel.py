@@ -129,14 +129,18 @@ def test_wheel_installs_and_runs_outside_the_checkout(tmp_path: Path):
     env = _environment(python.parent, tmp_path / "xdg")
 
     where = (
-        "import workbench, workbench.paths as p; print(workbench.__file__); print(p.project_root())"
+        "import workbench, workbench.paths as p\n"
+        "for path in (workbench.__file__, p.project_root(), p.urdf_dir(), p.mapping_dir(),"
+        " p.examples_dir()):\n"
+        "    print(path)\n"
     )
-    module, root = (
-        Path(line)
-        for line in _run([str(python), "-c", where], cwd=elsewhere, env=env).stdout.splitlines()
-    )
+    printed = _run([str(python), "-c", where], cwd=elsewhere, env=env).stdout.splitlines()
+    module, root, urdf, mapping, examples = (Path(line) for line in printed)
     assert module.is_relative_to(site), f"imported {module}, not the wheel's copy in {site}"
     assert root == site / "workbench" / "_data"
+    assert (urdf / "robot_arm.urdf").is_file() and (urdf / "meshes").is_dir()
+    assert (mapping / "demo_rooms.yaml").is_file()
+    assert (examples / "talker.py").is_file()
 
     check = _run(["workbench", "check", "robot_arm"], cwd=elsewhere, env=env).stdout
     assert "robot name is: robot_arm" in check
