@@ -189,7 +189,7 @@ class _PackageWriter:
         if self.uses_numpy:
             lines.append("\nimport numpy as np\nfrom numpy.typing import ArrayLike, NDArray\n")
         lines.append("\n")
-        if self.typing & {"Self"}:
+        if "Self" in self.typing:
             lines.append("from typing_extensions import Self\n\n")
         # `geometry_msgs.msg.Twist` / `turtlesim.srv.Spawn`, as the lab's rospy scripts write them;
         # the import statements in the order the project's import sorter keeps them.
