@@ -164,7 +164,7 @@ def _frames(args: argparse.Namespace) -> int:
 
 
 def _view(args: argparse.Namespace) -> int:
-    from workbench.tf.display import TfDisplay
+    from workbench.viz.frames import TfDisplay
     from workbench.viz import Viewer
 
     node, buffer, _ = _listener()
