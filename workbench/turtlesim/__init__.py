@@ -22,7 +22,6 @@ from workbench.turtlesim.sim import (
     TurtleSim,
 )
 
-
 __all__ = [
     "CANVAS_PX",
     "COMMAND_TIMEOUT",
