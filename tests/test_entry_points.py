@@ -178,3 +178,11 @@ def test_workbench_run_imports_only_the_nodes_module(tmp_path: Path) -> None:
     heavy = [n for n in imported if n.startswith(("workbench.bus", "pydrake", "workbench.model"))]
     assert not heavy, f"`workbench run` imported {heavy} before the node ran"
     assert "workbench.cli.run" in imported and "workbench.entry_points" in imported
+
+
+def test_stale_metadata_is_named_in_the_error(monkeypatch: pytest.MonkeyPatch) -> None:
+    import workbench.entry_points as module
+
+    monkeypatch.setattr(module, "entry_points", lambda group: [])
+    with pytest.raises(UnknownNodeError, match=r"known nodes: none.*run `pip install -e \.`"):
+        run_node("turtlesim", "turtlesim_node", [])

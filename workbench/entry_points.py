@@ -103,7 +103,21 @@ def unknown_node(package: str, executable: str, *, scripts: bool = False) -> Unk
     hint = f"known nodes: {known}"
     if scripts:
         hint += "; scripts are looked for in ./, ./scripts, the package folder and examples/"
+    if not _workbench_declares_nodes():
+        hint += (
+            "; workbench's installed metadata declares no nodes (installed from an older "
+            "checkout, or not installed): run `pip install -e .` in the checkout again"
+        )
     return UnknownNodeError(f"no node '{executable}' in package '{package}'{where}", hint=hint)
+
+
+def _workbench_declares_nodes() -> bool:
+    """Whether the installed ``workbench`` distribution itself declares nodes."""
+    for point in entry_points(group=GROUP):
+        dist = getattr(point, "dist", None)
+        if dist is not None and dist.metadata["Name"] == "workbench":
+            return True
+    return False
 
 
 def load_node(target: str) -> NodeMain:
