@@ -186,3 +186,16 @@ def test_stale_metadata_is_named_in_the_error(monkeypatch: pytest.MonkeyPatch) -
     monkeypatch.setattr(module, "entry_points", lambda group: [])
     with pytest.raises(UnknownNodeError, match=r"known nodes: none.*run `pip install -e \.`"):
         run_node("turtlesim", "turtlesim_node", [])
+
+
+def test_a_third_party_distribution_adds_nodes(node_module: str, tmp_path: Path) -> None:
+    """An installed distribution (a ``.dist-info`` on sys.path) that declares the group."""
+    info = tmp_path / "my_robot-1.0.dist-info"
+    info.mkdir()
+    (info / "METADATA").write_text("Metadata-Version: 2.1\nName: my_robot\nVersion: 1.0\n")
+    (info / "entry_points.txt").write_text(
+        f"[{GROUP}]\nrosserial_python/serial_node.py = {node_module}:main\n"
+    )
+    assert declared_nodes()["rosserial_python/serial_node.py"] == f"{node_module}:main"
+    assert run_node("rosserial_python", "serial_node", ["/dev/ttyACM0"]) == 3
+    assert json.loads((tmp_path / "argv.json").read_text()) == ["/dev/ttyACM0"]
