@@ -10,7 +10,12 @@ the same job needs:
   into a ``MultibodyPlant``) and against ROS's ``check_urdf`` when installed;
 * ``workbench check --no-load`` against parsing the file with lxml;
 * ``workbench graph`` against graphviz alone (``dot -Tpdf`` on the same .gv)
-  and ROS's ``urdf_to_graphviz`` when installed.
+  and ROS's ``urdf_to_graphviz`` when installed;
+* ``workbench run PKG EXE`` until the node's main is called, before (commit
+  :data:`BEFORE_REV`, nodes registered by importing every capability) and after
+  (entry points), beside ``python -c pass``; with the modules imported by then.
+  Run it from an installed checkout (``pip install -e .``): entry points are
+  package metadata.
 
 Usage: ``python benchmarks/startup.py [--quick] [--runs N] [--model PATH]``.
 Writes ``benchmarks/results/startup.json``.
@@ -48,6 +53,167 @@ def timed(command: list[str], runs: int, cwd: Path) -> tuple[float, str]:
             raise SystemExit(f"{' '.join(command)} failed:\n{result.stderr}")
         out = result.stdout
     return statistics.median(times), out
+
+
+# --- `workbench run`: time and modules until the node's main is called ----------------------
+
+#: The last commit that found nodes through import side effects (PROVIDERS imported on
+#: every lookup), measured as "before".
+BEFORE_REV = "20ef01f"
+
+#: (package, executable, before's module:function, after's module:function).
+RUN_NODES = [
+    (
+        "turtlesim",
+        "turtlesim_node",
+        "workbench.turtlesim.node:main",
+        "workbench.turtlesim.node:main",
+    ),
+    (
+        "tf2_ros",
+        "static_transform_publisher",
+        "workbench.tf.nodes:static_transform_publisher",
+        "workbench.tf.nodes:static_transform_publisher",
+    ),
+    (
+        "robot_state_publisher",
+        "robot_state_publisher",
+        "workbench.tf.nodes:robot_state_publisher",
+        "workbench.robot_state.nodes:robot_state_publisher",
+    ),
+]
+
+# Runs `workbench run PKG EXE` in-process as `python -m workbench` would, with a meta-path
+# hook that swaps the node's function for a probe as soon as its module has executed; the
+# probe prints the wall clock and what is imported, and ends the process. Nothing else of
+# the lookup is touched, so before and after are measured the same way.
+RUN_PROBE = """
+import importlib.machinery, json, os, sys, time
+package, executable, target = sys.argv[1:4]
+module_name, _, function = target.partition(":")
+
+def probe(*args, **kwargs):
+    now = time.time()
+    names = list(sys.modules)
+    print(json.dumps({"t": now, "modules": len(names),
+        "workbench": sum(n == "workbench" or n.startswith("workbench.") for n in names),
+        "bus": "workbench.bus.bus" in names, "pydrake": "pydrake" in names}), flush=True)
+    os._exit(0)
+
+class SwapMain:
+    def find_spec(self, name, path=None, target=None):
+        if name != module_name:
+            return None
+        spec = importlib.machinery.PathFinder.find_spec(name, path)
+        run = spec.loader.exec_module
+        def exec_module(module):
+            run(module)
+            setattr(module, function, probe)
+        spec.loader.exec_module = exec_module
+        return spec
+
+sys.meta_path.insert(0, SwapMain())
+from workbench.cli import main
+sys.exit(main(["run", package, executable]))
+"""
+
+CLOCK_PROBE = "import json, time; print(json.dumps({'t': time.time()}))"
+
+
+def to_main(command: list[str], runs: int, cwd: Path, pythonpath: str | None) -> dict:
+    """Median seconds from spawning ``command`` to its probe, and what the probe saw."""
+    env = dict(os.environ, PYTHONDONTWRITEBYTECODE="1")
+    if pythonpath is not None:
+        env["PYTHONPATH"] = pythonpath
+    delays, seen = [], {}
+    for _ in range(runs):
+        start = time.time()
+        result = subprocess.run(command, cwd=cwd, capture_output=True, text=True, env=env)
+        lines = [line for line in result.stdout.splitlines() if line.startswith("{")]
+        if not lines:
+            raise SystemExit(f"{' '.join(command)} never reached main:\n{result.stderr}")
+        seen = json.loads(lines[-1])
+        delays.append(seen["t"] - start)
+    return {"seconds": statistics.median(delays), **{k: v for k, v in seen.items() if k != "t"}}
+
+
+def checkout_of(rev: str, into: Path) -> Path | None:
+    """``workbench/`` of commit ``rev`` unpacked under ``into`` (None without git or the commit)."""
+    archive = subprocess.run(
+        ["git", "-C", str(ROOT), "archive", rev, "workbench"], capture_output=True
+    )
+    if archive.returncode != 0:
+        return None
+    into.mkdir(parents=True, exist_ok=True)
+    subprocess.run(["tar", "-x", "-C", str(into)], input=archive.stdout, check=True)
+    return into
+
+
+def run_rows(runs: int, work: Path) -> tuple[list[dict], float]:
+    """Before/after rows for ``workbench run`` and the interpreter's own start time."""
+    py = sys.executable
+    base = to_main([py, "-c", CLOCK_PROBE], runs, work, None)["seconds"]
+    before_tree = checkout_of(BEFORE_REV, work / "before")
+    rows = []
+    for package, executable, before_target, after_target in RUN_NODES:
+        after = to_main(
+            [py, "-c", RUN_PROBE, package, executable, after_target], runs, work, str(ROOT)
+        )
+        before = None
+        if before_tree is not None:
+            before = to_main(
+                [py, "-c", RUN_PROBE, package, executable, before_target],
+                runs,
+                work,
+                str(before_tree),
+            )
+        rows.append(
+            {
+                "task": f"workbench run {package} {executable}",
+                "before_s": None if before is None else round(before["seconds"], 4),
+                "before_modules": None if before is None else before["modules"],
+                "before_workbench_modules": None if before is None else before["workbench"],
+                "after_s": round(after["seconds"], 4),
+                "after_modules": after["modules"],
+                "after_workbench_modules": after["workbench"],
+                "after_bus_before_main": after["bus"],
+                "after_pydrake_before_main": after["pydrake"],
+                "baseline": "python -c pass",
+                "baseline_s": round(base, 4),
+                "after_beyond_start_s": round(after["seconds"] - base, 4),
+                "before_beyond_start_s": None
+                if before is None
+                else round(before["seconds"] - base, 4),
+            }
+        )
+    return rows, base
+
+
+def print_run_rows(rows: list[dict]) -> None:
+    print(
+        f"\n`workbench run PKG EXE` until the node's main is called (before = {BEFORE_REV}, "
+        "import-side-effect registry; after = entry points); seconds from spawn, "
+        "modules in sys.modules at main"
+    )
+    header = (
+        f"| {'node':58} | {'before s':>8} | {'modules':>7} | {'after s':>7} | {'modules':>7} "
+        f"| {'python -c pass':>14} | {'after beyond start':>18} |"
+    )
+    print(header)
+    print("|" + "|".join("-" * len(part) for part in header.split("|")[1:-1]) + "|")
+    for item in rows:
+        before = "-" if item["before_s"] is None else f"{item['before_s']:.3f}"
+        before_modules = "-" if item["before_modules"] is None else str(item["before_modules"])
+        print(
+            f"| {item['task']:58} | {before:>8} | {before_modules:>7} | {item['after_s']:7.3f} "
+            f"| {item['after_modules']:7d} | {item['baseline_s']:14.3f} "
+            f"| {item['after_beyond_start_s']:18.3f} |"
+        )
+    worst = max(item["after_beyond_start_s"] for item in rows)
+    print(
+        f"\n`workbench run` reaches the node's main {worst:.3f} s beyond interpreter start at "
+        f"worst (target < 0.3 s): {'met' if worst < 0.3 else 'NOT met'}"
+    )
 
 
 def main() -> int:
@@ -128,6 +294,7 @@ def main() -> int:
                 "ROS urdf_to_graphviz",
                 [urdf_to_graphviz, model],
             )
+    run_nodes, interpreter_s = run_rows(runs, work)
     shutil.rmtree(work, ignore_errors=True)
 
     machine = describe(
@@ -160,6 +327,7 @@ def main() -> int:
         f"\n`workbench --help` {help_time:.3f} s (target < 0.3 s): "
         f"{'met' if help_time < 0.3 else 'NOT met'}"
     )
+    print_run_rows(run_nodes)
 
     results = ROOT / "benchmarks" / "results"
     results.mkdir(parents=True, exist_ok=True)
@@ -168,6 +336,11 @@ def main() -> int:
         "machine": machine,
         "pydrake_on_import": pydrake_imported,
         "rows": rows,
+        "workbench_run": {
+            "before_rev": BEFORE_REV,
+            "interpreter_start_s": round(interpreter_s, 4),
+            "rows": run_nodes,
+        },
     }
     (results / "startup.json").write_text(json.dumps(payload, indent=2) + "\n")
     print(f"wrote {results / 'startup.json'}")

@@ -22,7 +22,7 @@ import math
 import os
 
 from workbench.tf import Buffer, TransformListener
-from workbench.tf.turtle_demo import TurtleTfDemo
+from workbench.turtlesim.tf_demo import TurtleTfDemo
 
 SHORT = os.environ.get("WORKBENCH_NOTEBOOK_MODE") == "short"
 SECONDS = 4.0 if SHORT else 12.0   # simulated seconds per step of the lab
@@ -146,7 +146,7 @@ import numpy as np
 from workbench.bus import Bus, Node
 from workbench.model import load_robot
 from workbench.robot_state import JointStatePublisher, RobotModelDisplay, RobotStatePublisher
-from workbench.tf.display import TfDisplay
+from workbench.viz.frames import TfDisplay
 from workbench.viz import Viewer
 
 bus = Bus(threaded=False)

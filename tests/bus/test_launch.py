@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 
 from workbench.bus.launch import LaunchError, load_launch
+from workbench.cli.launch import launch, split_target
 
 
 def test_manual_start_demo(data_dir):
@@ -86,3 +87,19 @@ def test_cli_dry_run_and_errors(run_cli, data_dir, tmp_path):
     unknown = run_cli("run", "nopkg", "nonode", env={"WORKBENCH_MASTER_URI": "inproc"})
     assert unknown.returncode == 1
     assert "no node 'nonode' in package 'nopkg'" in unknown.stderr
+
+
+def test_launch_handler_in_process(data_dir, capsys):
+    path, values = split_target([str(data_dir / "bus" / "features.launch"), "robot:=r9"])
+    assert path == data_dir / "bus" / "features.launch" and values == {"robot": "r9"}
+    assert launch(path, values, dry_run=True) == 0
+    out = capsys.readouterr().out
+    assert "node /r9/talker: beginner_tutorials/talker.py --fast" in out
+    assert "param /owner = 'r9'" in out
+
+
+def test_launch_handler_rejects_bad_targets(tmp_path):
+    with pytest.raises(LaunchError, match="give a launch file, or a package and a launch file"):
+        split_target(["a", "b", "c"])
+    with pytest.raises(LaunchError, match="does not exist"):
+        launch(tmp_path / "none.launch", dry_run=True)

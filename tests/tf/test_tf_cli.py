@@ -109,8 +109,8 @@ def test_tf_nodes_are_registered():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.split() == [
         "workbench.tf.nodes:static_transform_publisher",
-        "workbench.tf.nodes:robot_state_publisher",
-        "workbench.tf.nodes:joint_state_publisher_gui",
+        "workbench.robot_state.nodes:robot_state_publisher",
+        "workbench.robot_state.nodes:joint_state_publisher_gui",
     ]
 
 

@@ -1,6 +1,6 @@
 """Running nodes: ``workbench run`` (one node, in this process) and launch plans (many processes).
 
-A node is either a registered entry point (:mod:`workbench.bus.registry`) or
+A node is either a declared entry point (:mod:`workbench.entry_points`) or
 a Python script, found by its type name in the working directory, its
 ``scripts/`` folder, the launch file's package, or the checkout's
 ``examples/`` (where the lab's own scripts live).
@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from workbench.bus.launch import LaunchPlan, NodeSpec, find_package
-from workbench.bus.registry import UnknownNodeError, entry_point, load, registered_nodes
+from workbench.entry_points import call_node, find_node, unknown_node
 from workbench.errors import BusError
 
 
@@ -56,24 +56,27 @@ def find_script(pkg: str, node_type: str, near: Path | None = None) -> Path | No
 def run_node(pkg: str, node_type: str, argv: list[str], near: Path | None = None) -> int:
     """Run one node in this process (``workbench run``); returns its exit status.
 
+    A declared node (entry point) wins over a script of the same name.
+
     Raises:
-        UnknownNodeError: Neither a registered node nor a script of that name exists.
+        UnknownNodeError: Neither a declared node nor a script of that name exists.
     """
-    try:
-        target = entry_point(pkg, node_type)
-    except UnknownNodeError:
-        script = find_script(pkg, node_type, near)
-        if script is None:
-            known = ", ".join(sorted(registered_nodes())) or "none"
-            raise UnknownNodeError(
-                f"no node '{node_type}' in package '{pkg}' (neither registered nor a script)",
-                hint=f"registered nodes: {known}; scripts are looked for in ./, ./scripts, "
-                "the package folder and examples/",
-            ) from None
-        return run_script(script, argv)
-    function = load(target)
-    result = function(list(argv))
-    return int(result or 0)
+    target = find_node(pkg, node_type)
+    if target is not None:
+        return call_node(target, list(argv))
+    return run_script_node(pkg, node_type, argv, near)
+
+
+def run_script_node(pkg: str, node_type: str, argv: list[str], near: Path | None = None) -> int:
+    """Run the script that plays node ``pkg/node_type`` (no entry point declares it).
+
+    Raises:
+        UnknownNodeError: No script of that name is found (the message lists the known nodes).
+    """
+    script = find_script(pkg, node_type, near)
+    if script is None:
+        raise unknown_node(pkg, node_type, scripts=True)
+    return run_script(script, argv)
 
 
 def run_script(script: Path, argv: list[str]) -> int:

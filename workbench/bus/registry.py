@@ -1,94 +1,60 @@
-"""The registry of runnable nodes: ``pkg/type`` -> an entry point, for launch and run.
+"""The bus's view of the runnable nodes: ``package/executable`` -> ``module:function``.
 
-Capabilities register their nodes here (``workbench.turtlesim`` registers
-``turtlesim/turtlesim_node``); ``workbench run PKG TYPE`` and ``<node pkg=
-type=>`` in launch files look them up. An entry point is
-``"module.path:function"``; the function is called as ``function(argv)``
-with the node's command-line arguments (remappings included) and returns an
-exit status (or None). Modules listed in :data:`PROVIDERS` are imported on
-lookup so that their registrations happen without importing everything up
-front.
+Nodes are declared as entry points of the ``workbench.nodes`` group (see
+:mod:`workbench.entry_points`, which reads them with
+``importlib.metadata.entry_points(group="workbench.nodes")``; it sits below the
+bus so that ``workbench run`` looks a node up without importing the bus). This
+module keeps the bus-side names launch code and older scripts use.
 """
 
 from __future__ import annotations
 
-import importlib
-import threading
-
-from workbench.errors import BusError
-
-_ENTRIES: dict[str, str] = {}
-_LOCK = threading.Lock()
-
-#: Modules imported (if they exist) before a lookup, so they can register their nodes.
-PROVIDERS: list[str] = [
-    "workbench.turtlesim",
-    "workbench.tf",
-    "workbench.sim",
-    "workbench.serial",
-    "workbench.planning",
-    "workbench.mapping",
-]
-
-
-class UnknownNodeError(BusError):
-    """No node is registered under that package/type."""
-
-
-def register_node(name: str, entry_point: str) -> None:
-    """Register a runnable node.
-
-    Args:
-        name: ``package/type`` as launch files write it (``turtlesim/turtlesim_node``).
-        entry_point: ``"module.path:function"``; ``function(argv: list[str]) -> int | None``.
-    """
-    if name.count("/") != 1 or ":" not in entry_point:
-        raise BusError(
-            f"cannot register node '{name}' -> '{entry_point}'",
-            hint="use register_node('package/type', 'module.path:function')",
-        )
-    with _LOCK:
-        _ENTRIES[name] = entry_point
-
-
-def _load_providers() -> None:
-    for module in PROVIDERS:
-        try:
-            importlib.import_module(module)
-        except ImportError:
-            continue
+from workbench.entry_points import (
+    GROUP,
+    NodeMain,
+    UnknownNodeError,
+    call_node,
+    declared_nodes,
+    find_node,
+    load_node,
+    register_node,
+    unknown_node,
+)
 
 
 def registered_nodes() -> dict[str, str]:
-    """Every registered ``package/type`` -> entry point."""
-    _load_providers()
-    with _LOCK:
-        return dict(_ENTRIES)
+    """Every declared ``package/executable`` -> ``module:function``."""
+    return declared_nodes()
 
 
-def entry_point(package: str, node_type: str) -> str:
-    """The entry point registered for ``package/node_type``.
+def entry_point(package: str, executable: str) -> str:
+    """The ``module:function`` declared for ``package/executable`` (``.py`` optional).
 
     Raises:
-        UnknownNodeError: Nothing is registered (the message lists what is).
+        UnknownNodeError: No such node is declared (the message lists the known ones).
     """
-    name = f"{package}/{node_type.removesuffix('.py')}"
-    entries = registered_nodes()
-    found = entries.get(name) or entries.get(f"{package}/{node_type}")
-    if found is None:
-        known = ", ".join(sorted(entries)) or "none"
-        raise UnknownNodeError(
-            f"no node '{node_type}' in package '{package}'",
-            hint=f"registered nodes: {known}; or give a script path",
-        )
-    return found
+    target = find_node(package, executable)
+    if target is None:
+        raise unknown_node(package, executable)
+    return target
 
 
-def load(entry: str):
+def load(target: str) -> NodeMain:
     """Import and return the function named by ``"module:function"``."""
-    module_name, _, function = entry.partition(":")
-    try:
-        module = importlib.import_module(module_name)
-        return getattr(module, function)
-    except (ImportError, AttributeError) as error:
-        raise UnknownNodeError(f"cannot load node entry point '{entry}': {error}") from None
+    return load_node(target)
+
+
+__all__ = [
+    "GROUP",
+    "NodeMain",
+    "UnknownNodeError",
+    "call_node",
+    "declared_nodes",
+    "entry_point",
+    "find_node",
+    "load",
+    "load_node",
+    "register_node",
+    "registered_nodes",
+    "unknown_node",
+]

@@ -16,7 +16,17 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--dry-run", action="store_true", help="print the plan, start nothing")
 
 
-def _split(target: list[str]) -> tuple[Path, dict[str, str]]:
+def run(args: argparse.Namespace) -> int:
+    path, values = split_target(args.target)
+    return launch(path, values, uri=args.uri, dry_run=args.dry_run)
+
+
+def split_target(target: list[str]) -> tuple[Path, dict[str, str]]:
+    """The launch file and the ``arg:=value`` settings of ``FILE`` or ``PACKAGE FILE`` words.
+
+    Raises:
+        LaunchError: Not one file or one package and file, or no such file in the package.
+    """
     from workbench.bus.launch import LaunchError, find_package
 
     words = [w for w in target if ":=" not in w]
@@ -32,13 +42,28 @@ def _split(target: list[str]) -> tuple[Path, dict[str, str]]:
     raise LaunchError("give a launch file, or a package and a launch file name")
 
 
-def run(args: argparse.Namespace) -> int:
-    from workbench.bus.launch import load_launch
-    from workbench.bus.launcher import Launcher
+def launch(
+    path: Path,
+    values: dict[str, str] | None = None,
+    *,
+    uri: str | None = None,
+    dry_run: bool = False,
+) -> int:
+    """Start the nodes of the launch file ``path`` and wait for them (or print the plan).
 
-    path, values = _split(args.target)
-    plan = load_launch(path, values)
-    if args.dry_run:
+    Args:
+        path: A ``.launch``/``.xml`` or ``.yaml`` launch file.
+        values: ``arg`` values for the file (``name:=value`` on the command line).
+        uri: The core's address (default ``$WORKBENCH_MASTER_URI``).
+        dry_run: Print the parameters and nodes instead of starting anything.
+
+    Raises:
+        LaunchError: The file is missing or malformed.
+    """
+    from workbench.bus.launch import load_launch
+
+    plan = load_launch(path, dict(values or {}))
+    if dry_run:
         for name, value in sorted(plan.params.items()):
             text = repr(value)
             print(f"param {name} = {text if len(text) < 60 else text[:57] + '...'}")
@@ -46,7 +71,9 @@ def run(args: argparse.Namespace) -> int:
             extra = " ".join([*spec.args, *(f"{a}:={b}" for a, b in spec.remaps.items())])
             print(f"node {spec.full_name}: {spec.pkg}/{spec.type} {extra}".rstrip())
         return 0
-    launcher = Launcher(plan, uri=args.uri, near=path.resolve().parent)
+    from workbench.bus.launcher import Launcher
+
+    launcher = Launcher(plan, uri=uri, near=path.resolve().parent)
     try:
         launcher.start()
         launcher.wait()

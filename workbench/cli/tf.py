@@ -164,8 +164,8 @@ def _frames(args: argparse.Namespace) -> int:
 
 
 def _view(args: argparse.Namespace) -> int:
-    from workbench.tf.display import TfDisplay
     from workbench.viz import Viewer
+    from workbench.viz.frames import TfDisplay
 
     node, buffer, _ = _listener()
     viewer = Viewer.instance()

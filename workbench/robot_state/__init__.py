@@ -7,6 +7,9 @@
     robot = load_robot("robot_arm")
     rsp = RobotStatePublisher(robot, node)      # /joint_states -> /tf, /tf_static
     jsp = JointStatePublisher(robot, node)      # defaults (or sliders) -> /joint_states
+
+``workbench run robot_state_publisher robot_state_publisher`` and the
+joint_state_publisher nodes are in :mod:`workbench.robot_state.nodes`.
 """
 
 from __future__ import annotations

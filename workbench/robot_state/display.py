@@ -5,8 +5,8 @@ from __future__ import annotations
 from typing import Any
 
 from workbench.tf.buffer import Buffer
-from workbench.tf.display import rigid_transform
 from workbench.tf.exceptions import TransformException
+from workbench.viz.frames import rigid_transform
 
 
 class RobotModelDisplay:

@@ -13,7 +13,6 @@ classes are imported on first use.
 
 from __future__ import annotations
 
-import sys
 from typing import Any
 
 from workbench.tf.buffer import Buffer
@@ -49,14 +48,6 @@ __all__ = [
     "TransformException",
     "TransformListener",
 ]
-
-
-# The bus registry imports this package to find tf's runnable nodes; register them
-# then, without importing the bus when tf is used on its own.
-if "workbench.bus.registry" in sys.modules:
-    from workbench.tf.nodes import register_nodes
-
-    register_nodes()
 
 
 def __getattr__(name: str) -> Any:

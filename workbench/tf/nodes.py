@@ -1,15 +1,15 @@
-"""Runnable nodes for ``workbench run`` and launch files.
+"""tf's runnable nodes for ``workbench run`` and launch files.
 
 * ``tf/static_transform_publisher`` and ``tf2_ros/static_transform_publisher``:
   ``x y z yaw pitch roll frame_id child_frame_id`` or ``x y z qx qy qz qw frame_id
   child_frame_id`` (tf's form takes a trailing period in ms, ignored: the
   transform is latched on ``/tf_static``).
-* ``robot_state_publisher/robot_state_publisher`` and
-  ``joint_state_publisher/joint_state_publisher`` (``_gui`` for sliders): the robot is
-  the private parameter ``~robot`` (a ``urdf/`` name or a path) or the XML in
-  ``robot_description``.
 
-The manual's own scripts (``learning_tf``, ``robot_setup_tf``) are not registered:
+They are declared as entry points of the ``workbench.nodes`` group in
+``pyproject.toml``; the robot's nodes (``robot_state_publisher``,
+``joint_state_publisher``) live in :mod:`workbench.robot_state.nodes`.
+
+The manual's own scripts (``learning_tf``, ``robot_setup_tf``) are not declared:
 the launcher finds them as scripts beside the launch file (``examples/tf``), so a
 student's edited copy next to their own launch file is the one that runs.
 :func:`run_lab_script` runs the shipped copies by name.
@@ -20,10 +20,8 @@ from __future__ import annotations
 import math
 import runpy
 import sys
-import tempfile
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
 
 from workbench.tf.exceptions import InvalidArgumentException
 
@@ -39,27 +37,6 @@ LAB_SCRIPTS = {
     "robot_setup_tf/tf_broadcaster": "robot_setup_tf/tf_broadcaster.py",
     "robot_setup_tf/tf_listener": "robot_setup_tf/tf_listener.py",
 }
-
-
-def register_nodes() -> None:
-    """Register tf's nodes with the bus registry (idempotent)."""
-    from workbench.bus.registry import register_node
-
-    for name in ("tf/static_transform_publisher", "tf2_ros/static_transform_publisher"):
-        register_node(name, "workbench.tf.nodes:static_transform_publisher")
-    register_node(
-        "robot_state_publisher/robot_state_publisher", "workbench.tf.nodes:robot_state_publisher"
-    )
-    register_node(
-        "robot_state_publisher/state_publisher", "workbench.tf.nodes:robot_state_publisher"
-    )
-    register_node(
-        "joint_state_publisher/joint_state_publisher", "workbench.tf.nodes:joint_state_publisher"
-    )
-    register_node(
-        "joint_state_publisher_gui/joint_state_publisher_gui",
-        "workbench.tf.nodes:joint_state_publisher_gui",
-    )
 
 
 def examples_dir() -> Path:
@@ -122,86 +99,19 @@ def _is_number(text: str) -> bool:
     return True
 
 
-def _node(name: str, argv: Sequence[str]) -> tuple[Any, list[str]]:
+def static_transform_publisher(argv: Sequence[str] = ()) -> int:
+    """Publish one static transform on latched ``/tf_static`` until interrupted.
+
+    Args:
+        argv: The node's command line: the transform's arguments plus remappings
+            (``__name:=``, ``__ns:=``, ``from:=to``).
+    """
     from workbench.bus import Node
     from workbench.bus.names import myargv
-
-    node = Node(name, argv=list(argv))
-    return node, myargv(list(argv))
-
-
-def static_transform_publisher(argv: Sequence[str] = ()) -> int:
-    """Publish one static transform on latched ``/tf_static`` until interrupted."""
     from workbench.tf.broadcaster import StaticTransformBroadcaster, make_transform
 
-    node, args = _node("static_transform_publisher", argv)
-    parent, child, xyz, q = parse_static_args(args)
+    parent, child, xyz, q = parse_static_args(myargv(list(argv)))
+    node = Node("static_transform_publisher", argv=list(argv))
     StaticTransformBroadcaster(node).send_transform(make_transform(parent, child, xyz, q))
     node.bus.spin()
     return 0
-
-
-def load_robot_from_params(node: Any) -> Any:
-    """The robot named by ``~robot`` or described by the ``robot_description`` XML."""
-    from workbench.model import load_robot
-
-    source = node.get_param("~robot", None)
-    if source:
-        return load_robot(source)
-    xml = node.get_param("robot_description", None)
-    if not xml:
-        from workbench.errors import ModelError
-
-        raise ModelError(
-            f"{node.name}: no robot given",
-            hint="set the private parameter ~robot (e.g. _robot:=robot_arm) or robot_description",
-        )
-    folder = Path(tempfile.mkdtemp(prefix="robot_description_"))
-    path = folder / "robot_description.urdf"
-    path.write_text(str(xml))
-    return load_robot(path)
-
-
-def robot_state_publisher(argv: Sequence[str] = ()) -> int:
-    """Run robot_state_publisher for the robot of the parameters until interrupted."""
-    from workbench.robot_state import RobotStatePublisher
-
-    node, _ = _node("robot_state_publisher", argv)
-    robot = load_robot_from_params(node)
-    RobotStatePublisher(
-        robot,
-        node,
-        publish_frequency=float(node.get_param("~publish_frequency", 50.0)),
-        tf_prefix=str(node.get_param("~tf_prefix", "")),
-    )
-    node.bus.spin()
-    return 0
-
-
-def _joint_state_publisher(argv: Sequence[str], gui: bool) -> int:
-    from workbench.robot_state import JointStatePublisher
-
-    node, _ = _node("joint_state_publisher", argv)
-    robot = load_robot_from_params(node)
-    jsp = JointStatePublisher(
-        robot,
-        node,
-        rate=float(node.get_param("~rate", 10.0)),
-        zeros=node.get_param("~zeros", None),
-        use_gui=gui or bool(node.get_param("~use_gui", False)),
-        source_list=node.get_param("~source_list", []) or [],
-    )
-    if jsp.viewer is not None:
-        node.get_logger().info(f"joint sliders at {jsp.viewer.url}")
-    node.bus.spin()
-    return 0
-
-
-def joint_state_publisher(argv: Sequence[str] = ()) -> int:
-    """Run joint_state_publisher (defaults; ``_use_gui:=true`` for sliders)."""
-    return _joint_state_publisher(argv, gui=False)
-
-
-def joint_state_publisher_gui(argv: Sequence[str] = ()) -> int:
-    """Run joint_state_publisher with Meshcat sliders."""
-    return _joint_state_publisher(argv, gui=True)

@@ -1,7 +1,8 @@
 """Turtlesim: ROS Noetic's 2D turtle simulator, as a library and a bus node.
 
 ``TurtleSim`` is the pure simulation (no bus); :mod:`workbench.turtlesim.node`
-puts it on the bus with turtlesim's topics, services and parameters.
+puts it on the bus with turtlesim's topics, services and parameters;
+:mod:`workbench.turtlesim.tf_demo` is Experiment 4's turtle tf demo in one process.
 """
 
 from __future__ import annotations
@@ -20,20 +21,6 @@ from workbench.turtlesim.sim import (
     TurtlePose,
     TurtleSim,
 )
-
-
-def _register_nodes() -> None:
-    """Make ``turtlesim/turtlesim_node`` and the teleops runnable from launch files."""
-    from workbench.bus.registry import register_node
-
-    register_node("turtlesim/turtlesim_node", "workbench.turtlesim.node:main")
-    register_node("turtlesim/turtle_teleop_key", "workbench.teleop.run:turtle_teleop_main")
-    register_node(
-        "teleop_twist_keyboard/teleop_twist_keyboard", "workbench.teleop.run:twist_teleop_main"
-    )
-
-
-_register_nodes()
 
 __all__ = [
     "CANVAS_PX",

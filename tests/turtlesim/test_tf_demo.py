@@ -1,4 +1,4 @@
-"""Experiment 4 in one process on simulated time (workbench.tf.turtle_demo): deterministic checks."""
+"""Experiment 4 in one process on simulated time (workbench.turtlesim.tf_demo): deterministic checks."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from workbench.tf.turtle_demo import TurtleTfDemo
+from workbench.turtlesim.tf_demo import TurtleTfDemo
 
 CENTER = 5.544445
 

@@ -59,7 +59,7 @@ class TfDisplay:
         prefix: str = "/tf",
     ) -> None:
         if viewer is None:
-            from workbench.viz import Viewer
+            from workbench.viz.viewer import Viewer
 
             viewer = Viewer.instance()
         self.buffer = buffer
