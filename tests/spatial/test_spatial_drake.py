@@ -29,9 +29,9 @@ def test_agrees_with_drake_roll_pitch_yaw(rpy: np.ndarray) -> None:
     R_drake = RotationMatrix(RollPitchYaw(rpy)).matrix()
     np.testing.assert_allclose(spatial.matrix_from_rpy(rpy), R_drake, atol=1e-14)
     np.testing.assert_allclose(spatial.rotation_matrix(rpy).matrix(), R_drake, atol=1e-14)
-    np.testing.assert_allclose(spatial.rpy_from_matrix(R_drake), RollPitchYaw(
-        RotationMatrix(R_drake)
-    ).vector(), atol=1e-10)
+    np.testing.assert_allclose(
+        spatial.rpy_from_matrix(R_drake), RollPitchYaw(RotationMatrix(R_drake)).vector(), atol=1e-10
+    )
     q_drake = RotationMatrix(R_drake).ToQuaternion()
     q = spatial.quaternion_from_rpy(rpy)
     assert abs(abs(float(np.dot(q, spatial.xyzw_from_drake_quaternion(q_drake)))) - 1) < 1e-12

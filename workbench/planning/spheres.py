@@ -45,10 +45,9 @@ from workbench.planning.obstacles import ObstacleSet
 from workbench.planning.sphere_cover import cover_shape, load_sphere_model  # noqa: F401
 from workbench.planning.sphere_kernel import EPS as _EPS
 from workbench.planning.sphere_layout import build_layout
+from workbench.spatial import matrix_from_rigid_transform
 
-
-def _transform(rigid) -> np.ndarray:
-    return np.asarray(rigid.GetAsMatrix4(), float)
+_transform = matrix_from_rigid_transform
 
 
 class SphereChecker:

@@ -100,8 +100,10 @@ __all__ = [
     "wxyz_from_xyzw",
     "xyz_quaternion_from_matrix",
     "xyz_quaternion_from_msg",
+    "xyz_quaternion_from_rigid_transform",
     "xyz_rpy_from_matrix",
     "xyz_rpy_from_rigid_transform",
     "xyzw_from_drake_quaternion",
     "xyzw_from_wxyz",
+    "yaw_from_quaternion",
 ]

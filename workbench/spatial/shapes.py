@@ -21,8 +21,8 @@ from workbench.spatial.errors import SpatialError
 #: The shape kinds and the fields each needs.
 SHAPE_FIELDS: dict[str, tuple[str, ...]] = {
     "box": ("size",),
-    "cylinder": ("radius", "length"),
     "sphere": ("radius",),
+    "cylinder": ("radius", "length"),
     "mesh": ("filename",),
 }
 
@@ -137,9 +137,7 @@ def make_shape(kind: str, **fields: Any) -> Shape:
         SpatialError: Unknown kind, or missing or bad fields.
     """
     if kind not in SHAPE_FIELDS:
-        raise SpatialError(
-            f"unknown shape '{kind}'", hint="use one of: " + ", ".join(SHAPE_FIELDS)
-        )
+        raise SpatialError(f"unknown shape '{kind}'", hint="use one of: " + ", ".join(SHAPE_FIELDS))
     missing = [name for name in SHAPE_FIELDS[kind] if fields.get(name) is None]
     if missing:
         raise SpatialError(f"a {kind} needs {', '.join(missing)}")
@@ -162,7 +160,8 @@ def drake_shape(shape: Shape, *, convex_mesh: bool = False) -> Any:
             point-pair collision queries use) rather than ``Mesh``.
     """
     from pydrake.geometry import Box as DrakeBox
-    from pydrake.geometry import Convex, Cylinder as DrakeCylinder  # noqa: I001
+    from pydrake.geometry import Convex
+    from pydrake.geometry import Cylinder as DrakeCylinder
     from pydrake.geometry import Mesh as DrakeMesh
     from pydrake.geometry import Sphere as DrakeSphere
 
@@ -181,7 +180,8 @@ def drake_shape(shape: Shape, *, convex_mesh: bool = False) -> Any:
 def shape_from_drake(shape: Any) -> Shape | None:
     """The workbench shape of a pydrake Box, Cylinder, Sphere, Mesh or Convex (else None)."""
     from pydrake.geometry import Box as DrakeBox
-    from pydrake.geometry import Convex, Cylinder as DrakeCylinder  # noqa: I001
+    from pydrake.geometry import Convex
+    from pydrake.geometry import Cylinder as DrakeCylinder
     from pydrake.geometry import Mesh as DrakeMesh
     from pydrake.geometry import Sphere as DrakeSphere
 
