@@ -81,7 +81,8 @@ class CollisionWorld:
     """A robot welded to the world, a planning scene, and an exact collision checker.
 
     Args:
-        robot_source: A ``urdf/`` name or a URDF, SDF or xacro path (see ``load_robot``).
+        robot_source: A ``urdf/`` name, a URDF, SDF or xacro path, a ``RobotDescription``
+            or a loaded ``Robot`` (see ``load_robot``; the last two are not parsed again).
         scene: Obstacles fixed in the world frame.
         disabled_pairs: Link-name pairs never checked (the SRDF's ``disable_collisions``).
         edge_step: Joint-space step (rad or m, Euclidean) of exact edge checks.

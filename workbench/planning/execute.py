@@ -36,7 +36,7 @@ def execute(
     controller = planner.config.controller or {}
     world = World(time_step=time_step, bus=bus, ground=False)
     robot = world.add_robot(
-        planner.config.robot,
+        planner.robot,  # its description: the file is not read again
         controller=controller.get("type", "inverse_dynamics"),
         gains=controller.get("gains"),
     )

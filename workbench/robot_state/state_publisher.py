@@ -45,7 +45,8 @@ class RobotStatePublisher:
     """Publishes a robot's link frames from its joint states.
 
     Args:
-        robot: A loaded :class:`workbench.model.Robot` (finalized here).
+        robot: A loaded :class:`workbench.model.Robot` (finalized here), or a
+            ``RobotDescription``, ``urdf/`` name or path to load into a plant of its own.
         node: The node to publish with; ``None`` creates ``robot_state_publisher`` on the
             default bus.
         publish_frequency: Most transforms per second for moving joints (Hz), ROS's default 50.
@@ -67,6 +68,9 @@ class RobotStatePublisher:
             from workbench.bus import Node
 
             node = Node("robot_state_publisher")
+        from workbench.model import as_robot
+
+        robot = as_robot(robot)
         robot.finalize()
         self.robot = robot
         self.node = node

@@ -124,7 +124,8 @@ class World:
         """Add a robot; its root link is welded at ``X_WB`` unless ``floating_base``.
 
         Args:
-            source: A ``urdf/`` name or a description path.
+            source: A ``urdf/`` name, a description path, a ``RobotDescription`` or a
+                loaded ``Robot`` (the last two are not read or parsed again).
             name: Model instance name (default: the description's robot name).
             X_WB: Pose of the root link in the world (default: identity).
             floating_base: Leave the root free (then no controller is attached).
@@ -566,7 +567,7 @@ def _control_plant(robot: Any) -> Any:
     """
     from workbench.model import load_robot
 
-    copy = load_robot(robot.path, time_step=0.0, finalize=False)
+    copy = load_robot(robot, time_step=0.0, finalize=False)
     plant = copy.plant
     actuated = {
         plant.get_joint_actuator(i).joint().index() for i in plant.GetJointActuatorIndices()
