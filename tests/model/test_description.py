@@ -79,3 +79,20 @@ def test_errors_are_model_errors():
         RobotDescription.from_text("<robot name='x'>")
     with pytest.raises(ModelError, match="no robot description 'no_such_robot'"):
         RobotDescription.load("no_such_robot")
+
+
+def test_urdf_geometry_speaks_the_shape_vocabulary():
+    from workbench import spatial
+
+    document = RobotDescription.load("robot_arm").document
+    shapes = [
+        shape.geometry.to_shape()
+        for link in document.links
+        for shape in link.visuals + link.collisions
+        if shape.geometry is not None
+    ]
+    assert shapes and all(
+        isinstance(s, spatial.Box | spatial.Cylinder | spatial.Sphere | spatial.Mesh)
+        for s in shapes
+    )
+    assert document.link("base_link").visuals[0].geometry.to_shape() == spatial.Box((0.1, 0.1, 0.1))
