@@ -96,3 +96,10 @@ def test_urdf_geometry_speaks_the_shape_vocabulary():
         for s in shapes
     )
     assert document.link("base_link").visuals[0].geometry.to_shape() == spatial.Box((0.1, 0.1, 0.1))
+
+
+def test_xacro_arguments_cannot_change_an_expanded_description():
+    description = RobotDescription.load("robot_arm")
+    assert describe_robot(description, {}) is description
+    with pytest.raises(ModelError, match="already expanded"):
+        load_robot(description, mappings={"width": "2"})

@@ -63,8 +63,8 @@ class RobotDescription:
     mappings: dict[str, str] = field(default_factory=dict)
     document: UrdfDocument | None = None
     packages: PackageResolver = field(default_factory=PackageResolver)
-    _root_link: str | None = field(default=None, repr=False)
-    _prepared: Any = field(default=None, repr=False)
+    _root_link: str | None = field(default=None, init=False, repr=False)
+    _prepared: Any = field(default=None, init=False, repr=False)
 
     @classmethod
     def load(
@@ -172,13 +172,23 @@ def describe_robot(
     Args:
         source: A :class:`RobotDescription`, a loaded ``Robot``, a name from ``urdf/`` or a path.
         mappings: xacro arguments, used only when a file is read.
+
+    Raises:
+        ModelError: xacro arguments that differ from those ``source`` was expanded with.
     """
-    if isinstance(source, RobotDescription):
-        return source
-    description = getattr(source, "description", None)
-    if isinstance(description, RobotDescription):
-        return description
-    return RobotDescription.load(source, mappings)
+    carried = getattr(source, "description", None)  # a loaded Robot carries its description
+    description = source if isinstance(source, RobotDescription) else None
+    if description is None and isinstance(carried, RobotDescription):
+        description = carried
+    if description is None:
+        return RobotDescription.load(source, mappings)  # type: ignore[arg-type]
+    if mappings and dict(mappings) != description.mappings:
+        raise ModelError(
+            "xacro arguments given for a description that is already expanded",
+            path=description.path,
+            hint="pass them to RobotDescription.load(path, mappings) instead",
+        )
+    return description
 
 
 def _prepared_root(document: UrdfDocument, packages: PackageResolver) -> Any:

@@ -5,10 +5,11 @@ pydrake is imported inside each function, so importing this module stays cheap.
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from workbench.spatial.errors import SpatialError
 from workbench.spatial.poses import homogeneous, pose_matrix
@@ -16,28 +17,28 @@ from workbench.spatial.rotations import quaternion4, vector3, wxyz_from_xyzw, xy
 
 
 def rigid_transform(
-    xyz: Sequence[float] = (0.0, 0.0, 0.0),
-    rpy: Sequence[float] | None = None,
-    quaternion: Sequence[float] | None = None,
+    xyz: ArrayLike = (0.0, 0.0, 0.0),
+    rpy: ArrayLike | None = None,
+    quaternion: ArrayLike | None = None,
 ) -> Any:
     """A ``RigidTransform`` from a translation (m) and rpy (rad) or a quaternion ``(x, y, z, w)``."""
     from pydrake.math import RigidTransform
 
-    return RigidTransform(pose_matrix(xyz, rpy, quaternion))
+    return RigidTransform(pose_matrix(xyz, rpy, quaternion))  # type: ignore[arg-type]
 
 
-def rotation_matrix(rpy: Sequence[float] | None = None, quaternion: Any = None) -> Any:
+def rotation_matrix(rpy: ArrayLike | None = None, quaternion: Any = None) -> Any:
     """A Drake ``RotationMatrix`` from rpy (rad) or a quaternion ``(x, y, z, w)``."""
     from pydrake.math import RotationMatrix
 
     return RotationMatrix(pose_matrix((0.0, 0.0, 0.0), rpy, quaternion)[:3, :3])
 
 
-def drake_quaternion(quaternion: Sequence[float]) -> Any:
+def drake_quaternion(quaternion: ArrayLike) -> Any:
     """A pydrake (Eigen) ``Quaternion`` from ROS's ``(x, y, z, w)`` order, normalised."""
     from pydrake.common.eigen_geometry import Quaternion
 
-    return Quaternion(wxyz_from_xyzw(quaternion4(quaternion)))
+    return Quaternion(wxyz_from_xyzw(quaternion4(quaternion)))  # type: ignore[arg-type]
 
 
 def xyzw_from_drake_quaternion(quaternion: Any) -> np.ndarray:
@@ -100,9 +101,9 @@ def as_rigid_transform(value: Any) -> Any:
             ) from None
     array = np.asarray(value, dtype=float) if _numeric(value) else None
     if array is not None and array.shape == (4, 4):
-        return RigidTransform(homogeneous(array))
+        return RigidTransform(homogeneous(array))  # type: ignore[arg-type]
     if array is not None and array.size == 3:
-        return RigidTransform(vector3(array, "xyz"))
+        return RigidTransform(vector3(array, "xyz"))  # type: ignore[arg-type]
     raise SpatialError(
         f"a pose is a RigidTransform, [x, y, z], a 4x4 matrix or {{xyz, rpy}}; got {value!r}"
     )

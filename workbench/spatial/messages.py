@@ -8,13 +8,14 @@ import the message or bus packages, so any object with those fields works.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from workbench.spatial.errors import SpatialError
 from workbench.spatial.poses import pose_matrix, xyz_quaternion_from_matrix
+from workbench.spatial.rotations import floats
 
 
 def _parts(msg: Any) -> tuple[Any, Any]:
@@ -47,11 +48,11 @@ def matrix_from_msg(msg: Any) -> np.ndarray:
     return pose_matrix(xyz, quaternion=quaternion)
 
 
-def set_msg_pose(msg: Any, xyz: Sequence[float], quaternion: Sequence[float]) -> Any:
+def set_msg_pose(msg: Any, xyz: ArrayLike, quaternion: ArrayLike) -> Any:
     """Write a translation (m) and quaternion ``(x, y, z, w)`` into a message; returns it."""
     point, rotation = _parts(msg)
-    point.x, point.y, point.z = (float(v) for v in xyz)
-    rotation.x, rotation.y, rotation.z, rotation.w = (float(v) for v in quaternion)
+    point.x, point.y, point.z = floats(xyz, 3, "xyz")
+    rotation.x, rotation.y, rotation.z, rotation.w = floats(quaternion, 4, "a quaternion")
     return msg
 
 

@@ -7,10 +7,10 @@ The matrix maps points in B to points in A: ``p_A = X_AB @ [p_B, 1]``.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from workbench.spatial.errors import SpatialError
 from workbench.spatial.rotations import (
@@ -23,9 +23,9 @@ from workbench.spatial.rotations import (
 
 
 def pose_matrix(
-    xyz: Sequence[float] = (0.0, 0.0, 0.0),
-    rpy: Sequence[float] | None = None,
-    quaternion: Sequence[float] | None = None,
+    xyz: ArrayLike = (0.0, 0.0, 0.0),
+    rpy: ArrayLike | None = None,
+    quaternion: ArrayLike | None = None,
 ) -> np.ndarray:
     """The 4x4 matrix of a translation (m) and a rotation given as rpy (rad) or quaternion.
 
@@ -72,7 +72,7 @@ def xyz_quaternion_from_matrix(matrix: Any) -> tuple[np.ndarray, np.ndarray]:
     return X[:3, 3].copy(), quaternion_from_matrix(X[:3, :3])
 
 
-def translation_matrix(xyz: Sequence[float]) -> np.ndarray:
+def translation_matrix(xyz: ArrayLike) -> np.ndarray:
     """A 4x4 pose that only translates by ``xyz`` (m)."""
     return pose_matrix(xyz)
 

@@ -14,15 +14,30 @@ Conventions, the same as URDF, tf and REP 103:
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from workbench.spatial.errors import SpatialError
 
 #: Below this a norm or cosine is treated as zero (tf.transformations' value).
 EPS = float(np.finfo(float).eps * 4.0)
+
+
+def floats(values: ArrayLike, n: int, what: str) -> list[float]:
+    """``values`` as a list of ``n`` floats (not checked for finiteness).
+
+    Raises:
+        SpatialError: Not ``n`` numbers.
+    """
+    try:
+        out = np.asarray(values, dtype=float).reshape(-1)
+    except (TypeError, ValueError):
+        raise SpatialError(f"{what} must be {n} numbers, got {values!r}") from None
+    if out.size != n:
+        raise SpatialError(f"{what} must be {n} numbers, got {values!r}")
+    return [float(v) for v in out]
 
 
 def vector3(values: Any, what: str = "a 3-vector") -> np.ndarray:
@@ -58,19 +73,19 @@ def quaternion4(values: Any, what: str = "a quaternion (x, y, z, w)") -> np.ndar
     return q / norm
 
 
-def wxyz_from_xyzw(quaternion: Sequence[float]) -> np.ndarray:
+def wxyz_from_xyzw(quaternion: ArrayLike) -> np.ndarray:
     """Reorder a ROS ``(x, y, z, w)`` quaternion as Drake/Eigen's ``(w, x, y, z)``."""
-    x, y, z, w = (float(v) for v in quaternion)
+    x, y, z, w = floats(quaternion, 4, "a quaternion (x, y, z, w)")
     return np.array([w, x, y, z])
 
 
-def xyzw_from_wxyz(quaternion: Sequence[float]) -> np.ndarray:
+def xyzw_from_wxyz(quaternion: ArrayLike) -> np.ndarray:
     """Reorder a Drake/Eigen ``(w, x, y, z)`` quaternion as ROS's ``(x, y, z, w)``."""
-    w, x, y, z = (float(v) for v in quaternion)
+    w, x, y, z = floats(quaternion, 4, "a quaternion (w, x, y, z)")
     return np.array([x, y, z, w])
 
 
-def matrix_from_rpy(rpy: Sequence[float]) -> np.ndarray:
+def matrix_from_rpy(rpy: ArrayLike) -> np.ndarray:
     """The 3x3 rotation matrix of fixed-axis roll, pitch, yaw (radians)."""
     r, p, y = vector3(rpy, "rpy")
     cr, sr = math.cos(r), math.sin(r)
@@ -106,7 +121,7 @@ def rpy_from_matrix(matrix: Any) -> np.ndarray:
     return np.array([roll, pitch, yaw])
 
 
-def quaternion_from_rpy(rpy: Sequence[float]) -> np.ndarray:
+def quaternion_from_rpy(rpy: ArrayLike) -> np.ndarray:
     """The quaternion ``(x, y, z, w)`` of fixed-axis roll, pitch, yaw (radians)."""
     r, p, y = vector3(rpy, "rpy") / 2.0
     cr, sr = math.cos(r), math.sin(r)
@@ -122,12 +137,12 @@ def quaternion_from_rpy(rpy: Sequence[float]) -> np.ndarray:
     )
 
 
-def rpy_from_quaternion(quaternion: Sequence[float]) -> np.ndarray:
+def rpy_from_quaternion(quaternion: ArrayLike) -> np.ndarray:
     """Fixed-axis roll, pitch, yaw (radians) of a quaternion ``(x, y, z, w)``."""
     return rpy_from_matrix(matrix_from_quaternion(quaternion))
 
 
-def matrix_from_quaternion(quaternion: Sequence[float]) -> np.ndarray:
+def matrix_from_quaternion(quaternion: ArrayLike) -> np.ndarray:
     """The 3x3 rotation matrix of a quaternion ``(x, y, z, w)`` (normalised first).
 
     Raises:
@@ -157,9 +172,9 @@ def quaternion_from_matrix(matrix: Any) -> np.ndarray:
     return Rotation.from_matrix(m[:3, :3]).as_quat()
 
 
-def yaw_from_quaternion(quaternion: Sequence[float]) -> float:
+def yaw_from_quaternion(quaternion: ArrayLike) -> float:
     """The yaw (radians, about z) of a quaternion ``(x, y, z, w)``: a planar robot's heading."""
-    x, y, z, w = (float(v) for v in quaternion)
+    x, y, z, w = floats(quaternion, 4, "a quaternion (x, y, z, w)")
     return math.atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z))
 
 

@@ -9,12 +9,12 @@ and its origin its centre, as in URDF and Drake. pydrake is imported only by
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Union
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from workbench.spatial.errors import SpatialError
 
@@ -77,8 +77,8 @@ class Mesh:
         """Lower and upper corner of the scaled vertices in the mesh frame, m (needs trimesh)."""
         import trimesh
 
-        mesh = trimesh.load(str(self.filename), force="mesh")
-        vertices = np.asarray(mesh.vertices, dtype=float) * self.scale3()
+        mesh: Any = trimesh.load(str(self.filename), force="mesh")
+        vertices = np.asarray(mesh.vertices, dtype=np.float64) * self.scale3()
         return vertices.min(axis=0), vertices.max(axis=0)
 
     def half_extents(self) -> np.ndarray:
@@ -89,7 +89,7 @@ class Mesh:
 Shape = Union[Box, Cylinder, Sphere, Mesh]  # noqa: UP007 (a runtime alias for 3.10)
 
 
-def _positive(values: Sequence[float], n: int, what: str) -> list[float]:
+def _positive(values: ArrayLike, n: int, what: str) -> list[float]:
     try:
         out = [float(v) for v in np.asarray(values, dtype=float).reshape(-1)]
     except (TypeError, ValueError):
@@ -99,7 +99,7 @@ def _positive(values: Sequence[float], n: int, what: str) -> list[float]:
     return out
 
 
-def box(size: Sequence[float]) -> Box:
+def box(size: ArrayLike) -> Box:
     """A :class:`Box`; raises :class:`SpatialError` unless ``size`` is 3 positive numbers."""
     sx, sy, sz = _positive(size, 3, "box size")
     return Box((sx, sy, sz))
@@ -117,7 +117,7 @@ def sphere(radius: float) -> Sphere:
     return Sphere(r)
 
 
-def mesh(filename: str | os.PathLike[str], scale: float | Sequence[float] = 1.0) -> Mesh:
+def mesh(filename: str | os.PathLike[str], scale: float | ArrayLike = 1.0) -> Mesh:
     """A :class:`Mesh`; the file is not opened here."""
     if not os.fspath(filename):
         raise SpatialError("a mesh needs a filename")
@@ -173,7 +173,7 @@ def drake_shape(shape: Shape, *, convex_mesh: bool = False) -> Any:
         return DrakeSphere(shape.radius)
     if isinstance(shape, Mesh):
         cls = Convex if convex_mesh else DrakeMesh
-        return cls(str(Path(shape.filename)), shape.scale3())
+        return cls(str(Path(shape.filename)), shape.scale3())  # type: ignore[call-overload]
     raise SpatialError(f"not a workbench shape: {shape!r}")
 
 
