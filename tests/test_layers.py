@@ -34,8 +34,7 @@ LAYERS: dict[str, int] = {
     "optional": 0,
     "paths": 0,
     "entry_points": 0,
-    "poses": 0,
-    "shapes": 0,
+    "spatial": 0,
     # ROS 1 message types
     "msgs": 1,
     # the bus and bag files (same layer)

@@ -180,3 +180,32 @@ def test_zero_length_trajectory_holds(arm_world):
         arm_world.track_trajectory(
             "robot_arm", {**plan, "q": np.vstack([q0, q0 + 0.1])}, settle_time=0.1
         )
+
+
+def test_shapes_and_poses_in_the_spatial_vocabulary():
+    from workbench import spatial
+    from workbench.model import RobotDescription
+
+    description = RobotDescription.load("arm3")
+    world = World()
+    # two robots from one description, the second placed by a 4x4 matrix
+    world.add_robot(description, name="left")
+    X = spatial.pose_matrix([0.0, -1.0, 0.0], rpy=[0, 0, np.pi / 2])
+    world.add_robot(description, name="right", X_WB=X)
+    world.add_shape("crate", spatial.make_shape("box", size=[0.2, 0.2, 0.2]), [1.0, 1.0, 0.1])
+    world.add_shape(
+        "drum",
+        spatial.make_shape("cylinder", radius=0.1, length=0.3),
+        {"xyz": [-1, 1, 0.15], "quaternion": [0, 0, 0, 1]},
+    )
+    world.build()
+    assert world.obstacles == ["crate", "drum"]
+    context = world.plant.GetMyContextFromRoot(world.context)
+    right = world.robots["right"]
+    root = world.plant.GetBodyByName(right.root_link, right.model_instance)
+    X_WR = world.plant.EvalBodyPoseInWorld(context, root).GetAsMatrix4()
+    np.testing.assert_allclose(X_WR, X, atol=1e-12)
+    with pytest.raises(SimulationError, match="a pose is a RigidTransform"):
+        World().add_box("b", size=(1, 1, 1), X_WB="origin")
+    with pytest.raises(SimulationError, match="mesh file for 'm' not found"):
+        World().add_shape("m", spatial.make_shape("mesh", filename="/no/such.obj"))

@@ -141,3 +141,18 @@ def test_random_quaternion_is_unit_and_seeded():
 def test_unknown_axes_are_refused():
     with pytest.raises(InvalidArgumentException, match="unknown Euler axes 'xyz'"):
         tft.euler_matrix(0, 0, 0, "xyz")
+
+
+def test_sxyz_agrees_with_the_generic_shoemake_path():
+    """'sxyz' goes through workbench.spatial; 'rzyx' (the same rotation) through the table."""
+    rng = np.random.default_rng(2)
+    for roll, pitch, yaw in rng.uniform(-1.5, 1.5, (20, 3)):
+        q = tft.quaternion_from_euler(roll, pitch, yaw)
+        np.testing.assert_allclose(q, tft.quaternion_from_euler(yaw, pitch, roll, "rzyx"))
+        m = tft.euler_matrix(roll, pitch, yaw)
+        np.testing.assert_allclose(m, tft.euler_matrix(yaw, pitch, roll, "rzyx"), atol=1e-15)
+        np.testing.assert_allclose(
+            tft.euler_from_matrix(m), tft.euler_from_matrix(m, "rzyx")[::-1], atol=1e-12
+        )
+    # NaN angles keep giving NaN, as tf does, rather than an error
+    assert np.isnan(tft.quaternion_from_euler(math.nan, 0.0, 0.0)).all()

@@ -99,3 +99,20 @@ def test_png_of_a_robot_differs_from_an_empty_scene(require_program, arm3, tmp_p
         & (pixels[..., 2] < 80)
     )
     assert orange.sum() > 50
+
+
+def test_a_description_is_drawn_from_a_plant_of_its_own(viewer, arm3):
+    from workbench.errors import ViewerError
+    from workbench.model import RobotDescription
+
+    viewer.clear()
+    description = RobotDescription.load("arm3")
+    prefix = viewer.show_robot(description, prefix="/robots/from_description")
+    robot = viewer.robot_at(prefix)
+    assert robot.description is description and robot.plant is not arm3.plant
+    assert robot.joint_names == arm3.joint_names
+    q = robot.positions_from({"elbow_pitch_joint": 0.5})
+    viewer.set_positions(robot, q, prefix)
+    assert viewer.meshcat.HasPath(f"{prefix}/tool_link")
+    with pytest.raises(ViewerError, match="no robot is shown at /nowhere"):
+        viewer.robot_at("/nowhere")

@@ -10,7 +10,6 @@ laser is taken to sit at the base.
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import numpy as np
@@ -18,6 +17,7 @@ import numpy as np
 from workbench.mapping.errors import LogError
 from workbench.mapping.geometry import compose, wrap_angle
 from workbench.mapping.scan import LaserLog, Scan
+from workbench.spatial import yaw_from_quaternion
 
 SCAN_TYPE = "sensor_msgs/msg/LaserScan"
 ODOM_TYPE = "nav_msgs/msg/Odometry"
@@ -31,7 +31,7 @@ def _stamp(header) -> float:
 
 
 def _yaw(q) -> float:
-    return math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
+    return yaw_from_quaternion((q.x, q.y, q.z, q.w))
 
 
 def _frame(name: str) -> str:

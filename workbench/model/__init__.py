@@ -19,9 +19,10 @@ import os
 from typing import TYPE_CHECKING
 
 from workbench.model.check import CheckReport, check_robot
+from workbench.model.description import RobotDescription, describe_robot
 from workbench.model.findings import Finding
 from workbench.model.info import JointInfo, LinkInfo
-from workbench.model.loader import load_document, load_robot
+from workbench.model.loader import as_robot, load_document, load_robot
 from workbench.model.robot import Robot
 from workbench.model.sources import available_robots, resolve_robot_path
 
@@ -46,8 +47,11 @@ __all__ = [
     "JointInfo",
     "LinkInfo",
     "Robot",
+    "RobotDescription",
+    "as_robot",
     "available_robots",
     "check_robot",
+    "describe_robot",
     "graph_robot",
     "load_document",
     "load_robot",

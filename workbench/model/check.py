@@ -16,11 +16,11 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from workbench.errors import ModelError
+from workbench.model.description import RobotDescription
 from workbench.model.findings import Finding
 from workbench.model.rules import geometry_findings, inertia_findings, joint_findings, mesh_findings
-from workbench.model.sources import read_description, resolve_robot_path
 from workbench.model.tree import KinematicTree, build_tree
-from workbench.model.urdf_xml import UrdfDocument, parse_urdf_text
+from workbench.model.urdf_xml import UrdfDocument
 
 PARSED_BANNER = "---------- Successfully Parsed XML ---------------"
 
@@ -111,7 +111,10 @@ def tree_lines(name: str, root: str, tree: KinematicTree) -> list[str]:
 
 
 def _load_findings(
-    report: CheckReport, document: UrdfDocument, existing: list[Finding]
+    report: CheckReport,
+    document: UrdfDocument,
+    existing: list[Finding],
+    description: RobotDescription | None = None,
 ) -> list[Finding]:
     from workbench.model.loader import load_robot
 
@@ -119,7 +122,7 @@ def _load_findings(
     logger = logging.getLogger("workbench.model")
     disabled, logger.disabled = logger.disabled, True
     try:
-        robot = load_robot(source)
+        robot = load_robot(description if description is not None else source)
     except ModelError as error:
         element = document.element_at(error.line)
         if any(f.severity == "error" and f.element == element for f in existing):
@@ -146,8 +149,10 @@ def _load_findings(
     return findings
 
 
-def check_document(document: UrdfDocument, *, load: bool = True) -> CheckReport:
-    """Check a parsed URDF (see :func:`check_robot`)."""
+def check_document(
+    document: UrdfDocument, *, load: bool = True, description: RobotDescription | None = None
+) -> CheckReport:
+    """Check a parsed URDF (see :func:`check_robot`); ``description`` saves Drake's load a re-read."""
     tree = build_tree(document)
     lines = [f"robot name is: {document.name}"]
     if tree.root is not None and not tree.problems:
@@ -161,7 +166,7 @@ def check_document(document: UrdfDocument, *, load: bool = True) -> CheckReport:
     # Drake is asked only about models workbench finds no error in: it reports the
     # first problem only, and aborts the process on some (reversed joint limits).
     if load and document.path is not None and not any(f.severity == "error" for f in findings):
-        findings += _load_findings(report, document, findings)
+        findings += _load_findings(report, document, findings, description)
     report.findings = sorted(
         findings, key=lambda f: (f.severity != "error", f.line if f.line is not None else 0)
     )
@@ -182,22 +187,21 @@ def check_robot(source: str | os.PathLike[str], *, load: bool = True) -> CheckRe
         ModelError: The file cannot be found, read or parsed at all (not XML,
             empty, no ``<robot>``, bad numbers, failing xacro).
     """
-    path = resolve_robot_path(source)
-    description = read_description(path)
-    if description.format == "sdf":
-        return _check_sdf(path)
-    document = parse_urdf_text(description.text, path)
-    report = check_document(document, load=load)
+    description = RobotDescription.load(source)
+    if description.document is None:
+        return _check_sdf(description)
+    report = check_document(description.document, load=load, description=description)
     if description.expanded:
         # Line numbers would point into xacro's output, not into the file the user edits.
         report.findings = [replace(finding, line=None) for finding in report.findings]
     return report
 
 
-def _check_sdf(path: Path) -> CheckReport:
+def _check_sdf(description: RobotDescription) -> CheckReport:
     from workbench.model.loader import load_robot
 
-    robot = load_robot(path)
+    path = description.path
+    robot = load_robot(description)
     tree = KinematicTree()
     for link in robot.links:
         tree.children[link.name] = [j for j in robot.joints if j.parent == link.name]

@@ -3,23 +3,18 @@
 from __future__ import annotations
 
 import contextlib
-import copy
 import logging
 import os
 import re
 from pathlib import Path
 from typing import Any
 
-from lxml import etree
-
 from workbench.errors import ModelError
+from workbench.model.description import RobotDescription, describe_robot
+from workbench.model.description import prepared_urdf as prepared_urdf  # re-exported
 from workbench.model.info import LinkInfo
-from workbench.model.meshes import prepare_mesh
-from workbench.model.packages import PackageResolver
 from workbench.model.robot import Robot, joint_info_from_plant
-from workbench.model.sources import read_description, resolve_robot_path
-from workbench.model.tree import build_tree
-from workbench.model.urdf_xml import UrdfDocument, parse_urdf_text
+from workbench.model.urdf_xml import UrdfDocument
 
 
 class DrakeLoadError(ModelError):
@@ -66,84 +61,10 @@ def load_document(
     Raises:
         ModelError: The file cannot be found, read or parsed, or it is SDF.
     """
-    path = resolve_robot_path(source)
-    description = read_description(path, mappings)
-    if description.format != "urdf":
-        raise ModelError("this is an SDF file; only URDF can be read here", path=path)
-    return parse_urdf_text(description.text, path)
-
-
-def prepared_urdf(document: UrdfDocument) -> str:
-    """The URDF text with every mesh URI replaced by an absolute path Drake can read.
-
-    Raises:
-        ModelError: Unknown packages, missing meshes, unsupported mesh formats.
-    """
-    path = document.path
-    base = path.parent if path is not None else Path.cwd()
-    resolver = PackageResolver(path)
-    root = copy.deepcopy(document.root)
-    for mesh in root.iter("mesh"):
-        filename = mesh.get("filename")
-        if not filename:
-            continue
-        resolved = resolver.resolve(filename, base, where=path, line=mesh.sourceline)
-        mesh.set("filename", prepare_mesh(resolved, where=path, line=mesh.sourceline).as_uri())
-    _fill_forward_materials(root)
-    # Blank lines in place of the prolog keep Drake's line numbers those of the file.
-    padding = "\n" * ((document.root.sourceline or 1) - 1)
-    return padding + etree.tostring(root, encoding="unicode")
-
-
-def _fill_forward_materials(root) -> None:
-    """Give colour-less material references the colour defined later in the file.
-
-    ROS accepts ``<material name="black"/>`` in a visual before any
-    ``black`` has a colour (and draws it transparent); Drake refuses it. The
-    colour the file gives ``black`` later is used instead.
-    """
-    defined = {m.get("name") for m in root.iterchildren("material")}
-    later: dict[str, object] = {}
-    for material in root.iter("material"):
-        color = material.find("color")
-        if color is not None and material.get("name") not in later:
-            later[material.get("name")] = color
-    for link in root.iterchildren("link"):
-        for material in link.iter("material"):
-            name = material.get("name")
-            has_colour = material.find("color") is not None or material.find("texture") is not None
-            if has_colour:
-                defined.add(name)
-            elif name not in defined:
-                if name in later:
-                    material.append(copy.deepcopy(later[name]))
-                    defined.add(name)
-                else:
-                    material.getparent().remove(material)
-
-
-def _raise_tree_problems(document: UrdfDocument) -> str:
-    tree = build_tree(document)
-    if tree.problems:
-        first = tree.problems[0]
-        raise ModelError(
-            f"{first.element}: {first.message}",
-            path=document.path,
-            line=first.line,
-            hint=first.hint or None,
-        )
-    assert tree.root is not None
-    for joint in document.joints:
-        # Drake aborts the whole process on reversed limits, so they never reach it.
-        if joint.lower is not None and joint.upper is not None and joint.lower > joint.upper:
-            raise ModelError(
-                f"joint '{joint.name}': lower limit {joint.lower:g} is above upper limit "
-                f"{joint.upper:g}",
-                path=document.path,
-                line=joint.line,
-                hint="swap them",
-            )
-    return tree.root
+    description = describe_robot(source, mappings)
+    if description.document is None:
+        raise ModelError("this is an SDF file; only URDF can be read here", path=description.path)
+    return description.document
 
 
 def _drake_error(
@@ -167,7 +88,7 @@ def _drake_error(
 
 
 def load_robot(
-    source: str | os.PathLike[str],
+    source: str | os.PathLike[str] | RobotDescription | Robot,
     *,
     floating_base: bool = False,
     builder: Any = None,
@@ -180,10 +101,11 @@ def load_robot(
     """Load a robot description into a Drake MultibodyPlant.
 
     Args:
-        source: A path (URDF, SDF or ``.xacro``) or a name from ``urdf/`` such as
-            ``"robot_arm"``. ``package://`` URIs resolve through the file's own
-            package.xml, the checkout's ``urdf/`` and ``WORKBENCH_PACKAGE_PATH`` /
-            ``ROS_PACKAGE_PATH``.
+        source: A path (URDF, SDF or ``.xacro``), a name from ``urdf/`` such as
+            ``"robot_arm"``, a :class:`RobotDescription` (nothing is read or parsed
+            again) or a loaded :class:`Robot` (its description is reused).
+            ``package://`` URIs resolve through the file's own package.xml, the
+            checkout's ``urdf/`` and ``WORKBENCH_PACKAGE_PATH`` / ``ROS_PACKAGE_PATH``.
         floating_base: Leave the root link free (a 6-dof floating joint) instead of
             welding it to the world frame at the origin.
         builder: A ``DiagramBuilder`` to add the plant and scene graph to; None makes one.
@@ -192,7 +114,7 @@ def load_robot(
             then call :meth:`Robot.finalize`.
         plant: Add to this existing (unfinalized) plant instead of creating one.
         model_name: Rename the model instance (to load one description twice).
-        mappings: xacro arguments (``name -> value``).
+        mappings: xacro arguments (``name -> value``), used when a file is read.
 
     Returns:
         The loaded :class:`Robot`.
@@ -205,16 +127,12 @@ def load_robot(
     from pydrake.multibody.plant import AddMultibodyPlantSceneGraph
     from pydrake.systems.framework import DiagramBuilder
 
-    path = resolve_robot_path(source)
-    description = read_description(path, mappings)
-    document: UrdfDocument | None = None
-    if description.format == "urdf":
-        document = parse_urdf_text(description.text, path)
-        if model_name:
-            document.root.set("name", model_name)
-            document.name = model_name
-        root_link = _raise_tree_problems(document)
-        text = prepared_urdf(document)
+    description = describe_robot(source, mappings)
+    path = description.path
+    document = description.document
+    if document is not None:
+        root_link = description.root_link()
+        text = description.prepared_text(model_name)
 
     scene_graph = None
     if plant is None:
@@ -230,7 +148,7 @@ def load_robot(
         )
 
     parser = Parser(plant)
-    PackageResolver(path).fill_package_map(parser.package_map())
+    description.packages.fill_package_map(parser.package_map())
     warnings: list[str] = []
     try:
         with _drake_warnings(path, warnings):
@@ -299,6 +217,7 @@ def load_robot(
         floating_base=floating_base,
         materials=materials,
         document=document,
+        description=description,
     )
     robot.load_warnings = warnings
     if finalize:
@@ -307,3 +226,8 @@ def load_robot(
         except RuntimeError as error:
             raise _drake_error(error, path, document) from None
     return robot
+
+
+def as_robot(source: str | os.PathLike[str] | RobotDescription | Robot) -> Robot:
+    """``source`` itself when it is a loaded :class:`Robot`, else ``load_robot(source)``."""
+    return source if isinstance(source, Robot) else load_robot(source)

@@ -8,12 +8,14 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from workbench import spatial
 from workbench.errors import ModelError
 from workbench.model.info import JointInfo, LinkInfo
 
 if TYPE_CHECKING:
     from pydrake.math import RigidTransform
 
+    from workbench.model.description import RobotDescription
     from workbench.model.urdf_xml import UrdfDocument
 
 
@@ -39,6 +41,9 @@ class Robot:
         floating_base: Whether the root is free to move in the world.
         materials: Named colours from the description, ``name -> (r, g, b, a)``.
         document: The parsed URDF (None for SDF).
+        description: The :class:`~workbench.model.RobotDescription` it was loaded from;
+            pass it (or this robot) to ``load_robot`` to load the same robot into another
+            plant without reading the file again.
         load_warnings: Drake's warnings while parsing, one line each.
     """
 
@@ -57,6 +62,7 @@ class Robot:
         floating_base: bool,
         materials: dict[str, tuple[float, float, float, float]],
         document: UrdfDocument | None = None,
+        description: RobotDescription | None = None,
     ) -> None:
         self.name = name
         self.path = path
@@ -70,6 +76,7 @@ class Robot:
         self.floating_base = floating_base
         self.materials = materials
         self.document = document
+        self.description = description
         self.load_warnings: list[str] = []
         self._context = None
         self._movable: list[JointInfo] | None = None
@@ -274,8 +281,6 @@ _DRAKE_TYPES = {
 
 def joint_info_from_plant(joint) -> JointInfo:
     """Describe a Drake joint as a :class:`JointInfo` (used for SDF models)."""
-    from pydrake.math import RollPitchYaw
-
     kind = _DRAKE_TYPES.get(joint.type_name(), joint.type_name())
     axis = np.array([1.0, 0.0, 0.0])
     lower = upper = velocity = effort = None
@@ -286,15 +291,17 @@ def joint_info_from_plant(joint) -> JointInfo:
         velocity = float(joint.velocity_upper_limits()[0])
         if kind == "revolute" and np.isinf(lower) and np.isinf(upper):
             kind, lower, upper = "continuous", None, None
-    X_PF = joint.frame_on_parent().GetFixedPoseInBodyFrame()
+    xyz, rpy = spatial.xyz_rpy_from_rigid_transform(
+        joint.frame_on_parent().GetFixedPoseInBodyFrame()
+    )
     return JointInfo(
         joint.name(),
         kind,
         joint.parent_body().name(),
         joint.child_body().name(),
         axis,
-        np.array(X_PF.translation()),
-        np.array(RollPitchYaw(X_PF.rotation()).vector()),
+        xyz,
+        rpy,
         lower,
         upper,
         velocity,

@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 from lxml import etree
 
+from workbench import spatial
 from workbench.errors import ModelError
 from workbench.model.info import JointInfo, LinkInfo
 
@@ -37,6 +38,24 @@ class Geometry:
     size: tuple[float, ...] = ()
     filename: str | None = None
     scale: tuple[float, float, float] = (1.0, 1.0, 1.0)
+
+    def to_shape(self) -> spatial.Shape | None:
+        """The geometry in the :mod:`workbench.spatial` vocabulary (None for a capsule).
+
+        A mesh keeps the file name as written (``package://`` URIs are not resolved).
+
+        Raises:
+            SpatialError: Sizes that are not positive.
+        """
+        if self.kind == "box":
+            return spatial.make_shape("box", size=self.size)
+        if self.kind == "cylinder":
+            return spatial.make_shape("cylinder", radius=self.size[0], length=self.size[1])
+        if self.kind == "sphere":
+            return spatial.make_shape("sphere", radius=self.size[0])
+        if self.kind == "mesh":
+            return spatial.make_shape("mesh", filename=self.filename, scale=self.scale)
+        return None
 
 
 @dataclass

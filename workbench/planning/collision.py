@@ -23,6 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
+from workbench import spatial
 from workbench.errors import ModelError
 from workbench.planning.scene import PlanningScene, SceneObject
 
@@ -58,27 +59,18 @@ class JointMap:
 
 
 def drake_shape(obj: SceneObject):
-    """The pydrake shape of a scene object."""
-    from pydrake.geometry import Box, Convex, Cylinder, Sphere
-
-    if obj.type == "box":
-        return Box(*obj.size)
-    if obj.type == "sphere":
-        return Sphere(obj.radius)
-    if obj.type == "cylinder":
-        return Cylinder(obj.radius, obj.length)
-    return Convex(str(obj.filename), obj.scale)
+    """The pydrake shape of a scene object (a mesh as its convex hull, as collision sees it)."""
+    return spatial.drake_shape(obj.shape, convex_mesh=True)
 
 
 def add_scene_to_plant(plant, scene: PlanningScene) -> None:
     """Register every scene object as collision geometry on the world body."""
     from pydrake.geometry import ProximityProperties
-    from pydrake.math import RigidTransform
 
     for obj in scene:
         plant.RegisterCollisionGeometry(
             plant.world_body(),
-            RigidTransform(obj.X_WO),
+            spatial.as_rigid_transform(obj.X_WO),
             drake_shape(obj),
             f"scene::{obj.name}",
             ProximityProperties(),
@@ -89,7 +81,8 @@ class CollisionWorld:
     """A robot welded to the world, a planning scene, and an exact collision checker.
 
     Args:
-        robot_source: A ``urdf/`` name or a URDF, SDF or xacro path (see ``load_robot``).
+        robot_source: A ``urdf/`` name, a URDF, SDF or xacro path, a ``RobotDescription``
+            or a loaded ``Robot`` (see ``load_robot``; the last two are not parsed again).
         scene: Obstacles fixed in the world frame.
         disabled_pairs: Link-name pairs never checked (the SRDF's ``disable_collisions``).
         edge_step: Joint-space step (rad or m, Euclidean) of exact edge checks.

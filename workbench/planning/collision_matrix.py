@@ -189,7 +189,8 @@ class SelfCollisionProbe:
     :meth:`colliding_pairs` from SceneGraph's point-pair penetration query.
 
     Args:
-        source: A ``urdf/`` name, a path, or a loaded ``Robot`` (its file is reloaded).
+        source: A ``urdf/`` name, a path, a ``RobotDescription`` or a loaded ``Robot``
+            (its description is reused, the file is not read again).
     """
 
     def __init__(self, source: Any) -> None:
@@ -198,9 +199,8 @@ class SelfCollisionProbe:
 
         from workbench.model import load_robot
 
-        path = getattr(source, "path", source)
         builder = DiagramBuilder()
-        self.robot = load_robot(path, builder=builder)
+        self.robot = load_robot(source, builder=builder)
         self.robot.finalize()
         plant, scene_graph = self.robot.plant, self.robot.scene_graph
         self._diagram = builder.Build()

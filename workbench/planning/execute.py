@@ -31,27 +31,17 @@ def execute(
     Returns:
         The World's ``TrackingReport`` (max, RMS and final error per joint).
     """
-    from pydrake.math import RigidTransform
-
     from workbench.sim import World
 
     controller = planner.config.controller or {}
     world = World(time_step=time_step, bus=bus, ground=False)
     robot = world.add_robot(
-        planner.config.robot,
+        planner.robot,  # its description: the file is not read again
         controller=controller.get("type", "inverse_dynamics"),
         gains=controller.get("gains"),
     )
     for obj in planner.scene:
-        X_WO = RigidTransform(obj.X_WO)
-        if obj.type == "box":
-            world.add_box(obj.name, obj.size, X_WO)
-        elif obj.type == "sphere":
-            world.add_sphere(obj.name, obj.radius, X_WO)
-        elif obj.type == "cylinder":
-            world.add_cylinder(obj.name, obj.radius, obj.length, X_WO)
-        else:
-            world.add_mesh(obj.name, obj.filename, X_WO, scale=obj.scale)
+        world.add_shape(obj.name, obj.shape, obj.X_WO)
     world.build()
     world.set_positions(robot.name, planner.joints.full(result.start))
     return world.track_trajectory(

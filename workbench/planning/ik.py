@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from workbench import spatial
 from workbench.planning.collision import CollisionWorld, JointMap
 from workbench.planning.errors import IKError
 
@@ -46,7 +47,7 @@ def solve_ik(
     Raises:
         IKError: No collision-free solution within the limits was found.
     """
-    from pydrake.math import RigidTransform, RollPitchYaw, RotationMatrix
+    from pydrake.math import RigidTransform, RotationMatrix
     from pydrake.multibody.inverse_kinematics import InverseKinematics
     from pydrake.solvers import Solve
 
@@ -71,7 +72,7 @@ def solve_ik(
             tip, np.zeros(3), plant.world_frame(), xyz - tolerance, xyz + tolerance
         )
         if rpy is not None:
-            R = RotationMatrix(RollPitchYaw(np.asarray(rpy, float)))
+            R = spatial.rotation_matrix(rpy)
             ik.AddOrientationConstraint(
                 plant.world_frame(), R, tip, RotationMatrix(), angle_tolerance
             )

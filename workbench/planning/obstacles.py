@@ -12,10 +12,9 @@ import numpy as np
 
 from workbench.planning.collision import CollisionWorld
 from workbench.planning.sphere_cover import hull_vertices
+from workbench.spatial import matrix_from_rigid_transform
 
-
-def _transform(rigid) -> np.ndarray:
-    return np.asarray(rigid.GetAsMatrix4(), float)
+_transform = matrix_from_rigid_transform
 
 
 class ObstacleSet:

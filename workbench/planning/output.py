@@ -144,15 +144,15 @@ def summary_table(result: PlanResult) -> str:
 def show_scene(viewer, scene, prefix: str = "/scene") -> None:
     """Draw a planning scene's obstacles in the viewer (translucent grey)."""
     from pydrake.geometry import Rgba
-    from pydrake.math import RigidTransform
 
     from workbench.planning.collision import drake_shape
+    from workbench.spatial import as_rigid_transform
 
     viewer.meshcat.Delete(prefix)
     for obj in scene:
         path = f"{prefix}/{obj.name}"
         viewer.meshcat.SetObject(path, drake_shape(obj), Rgba(0.55, 0.55, 0.6, 0.6))
-        viewer.meshcat.SetTransform(path, RigidTransform(obj.X_WO))
+        viewer.meshcat.SetTransform(path, as_rigid_transform(obj.X_WO))
 
 
 def animate(

@@ -113,6 +113,8 @@ class MotionPlanner:
         scene: A :class:`PlanningScene` or the path of a scene YAML file.
         group: Planning group (default: the configuration's).
         use_spheres: Plan with the sphere model (exact geometry still confirms and re-checks).
+        description: The robot's :class:`~workbench.model.RobotDescription` (or a loaded
+            ``Robot``) to plan for instead of reading the configuration's robot file.
         edge_step: Joint step between collision checks on planner edges (rad or m; default
             the configuration's ``edge_resolution``, which the final re-check always uses).
             A coarser step plans faster; if the re-check then finds a collision the
@@ -128,6 +130,7 @@ class MotionPlanner:
         group: str | None = None,
         use_spheres: bool = True,
         edge_step: float | None = None,
+        description: Any = None,
     ) -> None:
         from workbench.planning.config import load_config
 
@@ -142,7 +145,10 @@ class MotionPlanner:
         srdf = config.srdf
         disabled = [(d.link1, d.link2) for d in srdf.disabled_collisions]
         self.world = CollisionWorld(
-            config.robot, self.scene, disabled_pairs=disabled, edge_step=config.edge_resolution
+            description if description is not None else config.robot,
+            self.scene,
+            disabled_pairs=disabled,
+            edge_step=config.edge_resolution,
         )
         self.robot = self.world.robot
         self.group = group or config.group

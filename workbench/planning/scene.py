@@ -38,34 +38,16 @@ import numpy as np
 import yaml
 
 from workbench.planning.errors import SceneError
+from workbench.spatial import Box, Cylinder, Mesh, Shape, Sphere, matrix_from_rpy, pose_matrix
+from workbench.spatial.shapes import SHAPE_FIELDS
 
 #: The object types a scene may hold and the size fields each needs.
-SIZE_FIELDS: dict[str, tuple[str, ...]] = {
-    "box": ("size",),
-    "sphere": ("radius",),
-    "cylinder": ("radius", "length"),
-    "mesh": ("filename",),
-}
+SIZE_FIELDS: dict[str, tuple[str, ...]] = SHAPE_FIELDS
 
 
 def rpy_to_matrix(rpy: np.ndarray) -> np.ndarray:
     """Rotation matrix of fixed-axis roll, pitch, yaw (URDF convention), radians."""
-    r, p, y = (float(v) for v in rpy)
-    cr, sr, cp, sp, cy, sy = (
-        math.cos(r),
-        math.sin(r),
-        math.cos(p),
-        math.sin(p),
-        math.cos(y),
-        math.sin(y),
-    )
-    return np.array(
-        [
-            [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
-            [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
-            [-sp, cp * sr, cp * cr],
-        ]
-    )
+    return matrix_from_rpy(rpy)
 
 
 @dataclass
@@ -97,29 +79,26 @@ class SceneObject:
     @property
     def X_WO(self) -> np.ndarray:  # noqa: N802 (monogram notation)
         """The object's pose in the world frame as a 4x4 homogeneous matrix."""
-        X = np.eye(4)
-        X[:3, :3] = rpy_to_matrix(self.rpy)
-        X[:3, 3] = self.xyz
-        return X
+        return pose_matrix(self.xyz, rpy=self.rpy)
+
+    @property
+    def shape(self) -> Shape:
+        """The object's geometry in the :mod:`workbench.spatial` vocabulary."""
+        if self.type == "box":
+            return Box(tuple(float(v) for v in self.size))  # type: ignore[arg-type]
+        if self.type == "sphere":
+            return Sphere(float(self.radius))
+        if self.type == "cylinder":
+            return Cylinder(float(self.radius), float(self.length))
+        return Mesh(str(self.filename), float(self.scale))
 
     def half_extents(self) -> np.ndarray:
         """Half extents of the object's bounding box in its own frame, metres."""
-        if self.type == "box":
-            return np.asarray(self.size, float) / 2
-        if self.type == "sphere":
-            return np.full(3, self.radius)
-        if self.type == "cylinder":
-            return np.array([self.radius, self.radius, self.length / 2])
-        lo, hi = self.mesh_bounds()
-        return (hi - lo) / 2
+        return self.shape.half_extents()
 
     def mesh_bounds(self) -> tuple[np.ndarray, np.ndarray]:
         """Lower and upper corner of a mesh's vertices in the object frame (scaled), metres."""
-        import trimesh
-
-        mesh = trimesh.load(str(self.filename), force="mesh")
-        vertices = np.asarray(mesh.vertices, float) * self.scale
-        return vertices.min(axis=0), vertices.max(axis=0)
+        return Mesh(str(self.filename), float(self.scale)).bounds()
 
 
 class _LineLoader(yaml.SafeLoader):

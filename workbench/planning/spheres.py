@@ -35,7 +35,6 @@ from __future__ import annotations
 
 import math
 import time
-from pathlib import Path
 
 import numpy as np
 
@@ -45,10 +44,9 @@ from workbench.planning.obstacles import ObstacleSet
 from workbench.planning.sphere_cover import cover_shape, load_sphere_model  # noqa: F401
 from workbench.planning.sphere_kernel import EPS as _EPS
 from workbench.planning.sphere_layout import build_layout
+from workbench.spatial import matrix_from_rigid_transform
 
-
-def _transform(rigid) -> np.ndarray:
-    return np.asarray(rigid.GetAsMatrix4(), float)
+_transform = matrix_from_rigid_transform
 
 
 class SphereChecker:
@@ -353,11 +351,12 @@ class SphereChecker:
 
     def _cached_pair_grid(self, sa: int, sb: int, between: list[int], lo, hi, step: float):
         """:meth:`_pair_grid`, kept on disk (:mod:`workbench.planning.array_cache`) under a
-        digest of what it depends on: the robot file, the collision filter, the group and
+        digest of what it depends on: the robot description, the collision filter, the group and
         the fixed joints' values, both bodies' names and sphere covers, and the grid."""
         from workbench.planning.array_cache import cached_arrays, digest
 
-        robot_text = Path(self.world.robot_path).read_bytes() if self.world.robot_path else b""
+        # The description's text is the file's (xacro expanded), already in memory.
+        robot_text = self.world.robot.description.text.encode()
         own = [np.nonzero(self.owner_slot == k)[0] for k in (sa, sb)]
         key = digest(
             robot_text,

@@ -30,7 +30,8 @@ class JointStatePublisher:
     """Publishes ``sensor_msgs/JointState`` for a robot's movable joints.
 
     Args:
-        robot: A loaded :class:`workbench.model.Robot`.
+        robot: A loaded :class:`workbench.model.Robot`, or a ``RobotDescription``,
+            ``urdf/`` name or path to load.
         node: The node to publish with; ``None`` creates ``joint_state_publisher``.
         rate: Publishing rate in Hz (ROS's default 10); 0 publishes only on :meth:`publish`.
         zeros: Joint name -> start position (rad or m), like the ``zeros`` parameter.
@@ -55,6 +56,9 @@ class JointStatePublisher:
             from workbench.bus import Node
 
             node = Node("joint_state_publisher")
+        from workbench.model import as_robot
+
+        robot = as_robot(robot)
         robot.finalize()
         self.robot = robot
         self.node = node

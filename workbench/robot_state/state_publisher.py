@@ -20,6 +20,7 @@ from typing import Any
 
 import numpy as np
 
+from workbench.spatial import xyz_quaternion_from_rigid_transform
 from workbench.tf.broadcaster import StaticTransformBroadcaster, TransformBroadcaster
 from workbench.tf.buffer import stamp_msg
 from workbench.tf.timeconv import to_ns
@@ -29,14 +30,13 @@ def _transform_msg(parent: str, child: str, X_PC: Any, stamp_ns: int) -> Any:
     from workbench.tf.buffer import _classes
 
     _, Header, TransformStamped, Transform, Vector3, Quaternion = _classes()  # noqa: N806
-    p = X_PC.translation()
-    q = X_PC.rotation().ToQuaternion()
+    p, q = xyz_quaternion_from_rigid_transform(X_PC)
     return TransformStamped._from_wire(
         Header._from_wire(0, stamp_msg(stamp_ns), parent),
         child,
         Transform._from_wire(
             Vector3._from_wire(float(p[0]), float(p[1]), float(p[2])),
-            Quaternion._from_wire(float(q.x()), float(q.y()), float(q.z()), float(q.w())),
+            Quaternion._from_wire(float(q[0]), float(q[1]), float(q[2]), float(q[3])),
         ),
     )
 
@@ -45,7 +45,8 @@ class RobotStatePublisher:
     """Publishes a robot's link frames from its joint states.
 
     Args:
-        robot: A loaded :class:`workbench.model.Robot` (finalized here).
+        robot: A loaded :class:`workbench.model.Robot` (finalized here), or a
+            ``RobotDescription``, ``urdf/`` name or path to load into a plant of its own.
         node: The node to publish with; ``None`` creates ``robot_state_publisher`` on the
             default bus.
         publish_frequency: Most transforms per second for moving joints (Hz), ROS's default 50.
@@ -67,6 +68,9 @@ class RobotStatePublisher:
             from workbench.bus import Node
 
             node = Node("robot_state_publisher")
+        from workbench.model import as_robot
+
+        robot = as_robot(robot)
         robot.finalize()
         self.robot = robot
         self.node = node

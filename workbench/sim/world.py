@@ -10,8 +10,9 @@ Usage::
     report = world.track_trajectory("robot_arm", JointTrajectory(names, t, q, qd))
 
 Frames: the world frame W has z up; the ground's top surface is the plane
-``z = ground_z``. ``X_WB`` arguments are a pydrake ``RigidTransform``, an
-``[x, y, z]`` translation, or ``{"xyz": [...], "rpy": [...]}`` (m, rad).
+``z = ground_z``. ``X_WB`` arguments are anything
+:func:`workbench.spatial.as_rigid_transform` takes: a pydrake ``RigidTransform``,
+an ``[x, y, z]`` translation, a 4x4 matrix, or ``{"xyz": [...], "rpy": [...]}`` (m, rad).
 
 Each fixed-base robot gets a joint-level controller (see
 :mod:`workbench.sim.controllers`) acting through the plant's applied
@@ -38,6 +39,7 @@ from workbench.sim.controllers import (
     make_command_system,
 )
 from workbench.sim.trajectory import TrackingReport, as_joint_trajectory
+from workbench.spatial import Mesh, Shape, SpatialError, as_rigid_transform, drake_shape, make_shape
 
 GROUND_NAME = "ground"
 
@@ -122,7 +124,8 @@ class World:
         """Add a robot; its root link is welded at ``X_WB`` unless ``floating_base``.
 
         Args:
-            source: A ``urdf/`` name or a description path.
+            source: A ``urdf/`` name, a description path, a ``RobotDescription`` or a
+                loaded ``Robot`` (the last two are not read or parsed again).
             name: Model instance name (default: the description's robot name).
             X_WB: Pose of the root link in the world (default: identity).
             floating_base: Leave the root free (then no controller is attached).
@@ -161,36 +164,38 @@ class World:
 
     def add_box(self, name: str, size: Sequence[float], X_WB: Any = None, rgba=None) -> None:
         """Add a static box with edge lengths ``size`` (x, y, z in m) centred at ``X_WB``."""
-        from pydrake.geometry import Box
-
-        sx, sy, sz = _positive(size, 3, f"box '{name}' size")
-        self._add_obstacle(name, Box(sx, sy, sz), X_WB, rgba)
+        self.add_shape(name, _shape(name, "box", size=size), X_WB, rgba)
 
     def add_sphere(self, name: str, radius: float, X_WB: Any = None, rgba=None) -> None:
         """Add a static sphere of ``radius`` (m) centred at ``X_WB``."""
-        from pydrake.geometry import Sphere
-
-        (r,) = _positive([radius], 1, f"sphere '{name}' radius")
-        self._add_obstacle(name, Sphere(r), X_WB, rgba)
+        self.add_shape(name, _shape(name, "sphere", radius=radius), X_WB, rgba)
 
     def add_cylinder(
         self, name: str, radius: float, length: float, X_WB: Any = None, rgba=None
     ) -> None:
         """Add a static cylinder (axis along its z) of ``radius`` and ``length`` (m) at ``X_WB``."""
-        from pydrake.geometry import Cylinder
-
-        r, length_ = _positive([radius, length], 2, f"cylinder '{name}' radius/length")
-        self._add_obstacle(name, Cylinder(r, length_), X_WB, rgba)
+        self.add_shape(name, _shape(name, "cylinder", radius=radius, length=length), X_WB, rgba)
 
     def add_mesh(
         self, name: str, path: str | os.PathLike[str], X_WB: Any = None, scale=1.0
     ) -> None:
         """Add a static mesh (OBJ/STL/GLTF; contact uses its convex hull) at ``X_WB``."""
-        from pydrake.geometry import Mesh
-
         if not os.path.isfile(path):
             raise SimulationError(f"mesh file for '{name}' not found", path=path)
-        self._add_obstacle(name, Mesh(os.fspath(path), scale), X_WB, None)
+        self.add_shape(name, _shape(name, "mesh", filename=path, scale=scale), X_WB, None)
+
+    def add_shape(self, name: str, shape: Shape, X_WB: Any = None, rgba=None) -> None:
+        """Add a static obstacle of any :mod:`workbench.spatial` shape at ``X_WB``.
+
+        Args:
+            name: Unique obstacle name.
+            shape: A ``spatial.Box``, ``Cylinder``, ``Sphere`` or ``Mesh`` (sizes in m).
+            X_WB: Pose of the shape's frame in the world (see the module docstring).
+            rgba: Colour (r, g, b, a) in [0, 1], or None for the default brown.
+        """
+        if isinstance(shape, Mesh) and not os.path.isfile(shape.filename):
+            raise SimulationError(f"mesh file for '{name}' not found", path=shape.filename)
+        self._add_obstacle(name, drake_shape(shape), X_WB, rgba)
 
     def build(self, meshcat: Any = None) -> None:
         """Finalize the plant, wire controllers, create the simulator (idempotent).
@@ -562,7 +567,7 @@ def _control_plant(robot: Any) -> Any:
     """
     from workbench.model import load_robot
 
-    copy = load_robot(robot.path, time_step=0.0, finalize=False)
+    copy = load_robot(robot, time_step=0.0, finalize=False)
     plant = copy.plant
     actuated = {
         plant.get_joint_actuator(i).joint().index() for i in plant.GetJointActuatorIndices()
@@ -586,31 +591,16 @@ def _pair(a: str, b: str) -> tuple[str, str]:
     return (a, b) if a <= b else (b, a)
 
 
-def _positive(values: Sequence[float], n: int, what: str) -> list[float]:
+def _shape(name: str, kind: str, **fields: Any) -> Shape:
     try:
-        out = [float(v) for v in values]
-    except (TypeError, ValueError):
-        raise SimulationError(f"{what} must be {n} positive numbers, got {values!r}") from None
-    if len(out) != n or not all(np.isfinite(v) and v > 0 for v in out):
-        raise SimulationError(f"{what} must be {n} positive numbers, got {values!r}")
-    return out
+        return make_shape(kind, **fields)
+    except SpatialError as error:
+        raise SimulationError(f"{kind} '{name}': {error.message}", hint=error.hint) from None
 
 
 def _transform(X: Any) -> Any:
-    """A RigidTransform from None, a RigidTransform, [x, y, z] or {"xyz", "rpy"}."""
-    from pydrake.math import RigidTransform, RollPitchYaw
-
-    if X is None:
-        return RigidTransform()
-    if isinstance(X, RigidTransform):
-        return X
-    if isinstance(X, Mapping):
-        xyz = np.asarray(X.get("xyz", [0, 0, 0]), dtype=float)
-        rpy = np.asarray(X.get("rpy", [0, 0, 0]), dtype=float)
-        if xyz.shape != (3,) or rpy.shape != (3,):
-            raise SimulationError(f"pose needs xyz and rpy of 3 numbers each, got {dict(X)!r}")
-        return RigidTransform(RollPitchYaw(rpy), xyz)
-    xyz = np.asarray(X, dtype=float).reshape(-1)
-    if xyz.shape != (3,):
-        raise SimulationError(f"a pose is a RigidTransform, [x, y, z] or {{xyz, rpy}}; got {X!r}")
-    return RigidTransform(xyz)
+    """A RigidTransform from None, a RigidTransform, [x, y, z], a 4x4 matrix or {"xyz", "rpy"}."""
+    try:
+        return as_rigid_transform(X)
+    except SpatialError as error:
+        raise SimulationError(error.message, hint=error.hint) from None

@@ -8,9 +8,11 @@
   (REP 103's roll/pitch/yaw). ``'rzyx'`` with (yaw, pitch, roll) is the same rotation.
   A ``(firstaxis, parity, repetition, frame)`` tuple is accepted as well.
 
-Angles are radians. Rotations go through :mod:`scipy.spatial.transform` where it
-has the same convention; the matrix-to-Euler extraction follows Shoemake's
-method so that angle ranges and gimbal-lock choices match ROS.
+Angles are radians. The default ``'sxyz'`` axes (URDF's roll-pitch-yaw) and the
+quaternion/matrix conversions are :mod:`workbench.spatial`'s, the one place
+workbench converts rotations; the other axis orders go through
+:mod:`scipy.spatial.transform`. The matrix-to-Euler extraction follows
+Shoemake's method so that angle ranges and gimbal-lock choices match ROS.
 """
 
 from __future__ import annotations
@@ -21,6 +23,7 @@ from typing import Any
 
 import numpy as np
 
+from workbench import spatial
 from workbench.tf.exceptions import InvalidArgumentException
 
 #: Machine epsilon times 4: below this a value is treated as zero.
@@ -85,10 +88,15 @@ def _scipy_sequence(axes: str) -> str:
     return axes[1:] if axes[0] == "s" else axes[1:].upper()
 
 
-def _rotation(quaternion: Sequence[float] | np.ndarray) -> Any:
+def _is_rpy(name: str, *angles: float) -> bool:
+    """Whether workbench.spatial's roll-pitch-yaw computes these Euler angles (finite 'sxyz')."""
+    return name == "sxyz" and all(math.isfinite(float(a)) for a in angles)
+
+
+def _matrix_nan(quaternion: np.ndarray) -> np.ndarray:
     from scipy.spatial.transform import Rotation
 
-    return Rotation.from_quat(np.asarray(quaternion, dtype=float)[:4])
+    return Rotation.from_quat(quaternion).as_matrix()
 
 
 # --- matrices -------------------------------------------------------------------
@@ -170,7 +178,10 @@ def euler_matrix(ai: float, aj: float, ak: float, axes: str | Sequence[int] = "s
 
     name, _ = _axes(axes)
     m = np.identity(4)
-    m[:3, :3] = Rotation.from_euler(_scipy_sequence(name), [ai, aj, ak]).as_matrix()
+    if _is_rpy(name, ai, aj, ak):
+        m[:3, :3] = spatial.matrix_from_rpy((ai, aj, ak))
+    else:
+        m[:3, :3] = Rotation.from_euler(_scipy_sequence(name), [ai, aj, ak]).as_matrix()
     return m
 
 
@@ -178,11 +189,14 @@ def euler_from_matrix(
     matrix: Any, axes: str | Sequence[int] = "sxyz"
 ) -> tuple[float, float, float]:
     """Euler angles (rad) of a rotation matrix, for ``axes`` (Shoemake's extraction)."""
-    _, (first, parity, repetition, frame) = _axes(axes)
+    name, (first, parity, repetition, frame) = _axes(axes)
+    m = np.asarray(matrix, dtype=float)[:3, :3]
+    if name == "sxyz":
+        roll, pitch, yaw = spatial.rpy_from_matrix(m)
+        return float(roll), float(pitch), float(yaw)
     i = first
     j = _NEXT_AXIS[i + parity]
     k = _NEXT_AXIS[i - parity + 1]
-    m = np.asarray(matrix, dtype=float)[:3, :3]
     if repetition:
         s = math.hypot(m[i, j], m[i, k])
         if s > _EPS:
@@ -224,6 +238,8 @@ def quaternion_from_euler(
     from scipy.spatial.transform import Rotation
 
     name, _ = _axes(axes)
+    if _is_rpy(name, ai, aj, ak):
+        return spatial.quaternion_from_rpy((ai, aj, ak))
     return Rotation.from_euler(_scipy_sequence(name), [ai, aj, ak]).as_quat()
 
 
@@ -247,16 +263,13 @@ def quaternion_matrix(quaternion: Sequence[float] | np.ndarray) -> np.ndarray:
     m = np.identity(4)
     if np.dot(q, q) < _EPS:
         return m
-    m[:3, :3] = _rotation(q).as_matrix()
+    m[:3, :3] = spatial.matrix_from_quaternion(q) if np.all(np.isfinite(q)) else _matrix_nan(q)
     return m
 
 
 def quaternion_from_matrix(matrix: Any) -> np.ndarray:
     """The quaternion ``[x, y, z, w]`` of the rotation part of a 3x3 or 4x4 matrix."""
-    from scipy.spatial.transform import Rotation
-
-    m = np.asarray(matrix, dtype=float)[:3, :3]
-    return Rotation.from_matrix(m).as_quat()
+    return spatial.quaternion_from_matrix(np.asarray(matrix, dtype=float)[:3, :3])
 
 
 def quaternion_multiply(

@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 
 from workbench.errors import ViewerError
+from workbench.spatial import Mesh, shape_from_drake
 
 #: Colour of a visual with no material (Drake's illustration default).
 DEFAULT_RGBA = (0.9, 0.9, 0.9, 1.0)
@@ -67,26 +68,21 @@ def robot_visuals(robot) -> list[Visual]:
 
 def shape_corners(shape) -> np.ndarray:
     """The 8 corners of a box around ``shape`` in its own frame (metres), shape (8, 3)."""
-    from pydrake.geometry import Box, Capsule, Convex, Cylinder, Ellipsoid, Mesh, Sphere
+    from pydrake.geometry import Capsule, Ellipsoid
 
     low, high = -np.full(3, 0.05), np.full(3, 0.05)
-    if isinstance(shape, Box):
-        high = np.array([shape.width(), shape.depth(), shape.height()]) / 2
-        low = -high
-    elif isinstance(shape, Cylinder):
-        high = np.array([shape.radius(), shape.radius(), shape.length() / 2])
+    known = shape_from_drake(shape)
+    if isinstance(known, Mesh):
+        low, high = _mesh_bounds(known)
+    elif known is not None:
+        high = known.half_extents()
         low = -high
     elif isinstance(shape, Capsule):
         high = np.array([shape.radius(), shape.radius(), shape.length() / 2 + shape.radius()])
         low = -high
-    elif isinstance(shape, Sphere):
-        high = np.full(3, shape.radius())
-        low = -high
     elif isinstance(shape, Ellipsoid):
         high = np.array([shape.a(), shape.b(), shape.c()])
         low = -high
-    elif isinstance(shape, Mesh | Convex):
-        low, high = _mesh_bounds(shape)
     return np.array(
         [
             [(low, high)[i][0], (low, high)[j][1], (low, high)[k][2]]
@@ -95,12 +91,8 @@ def shape_corners(shape) -> np.ndarray:
     )
 
 
-def _mesh_bounds(shape) -> tuple[np.ndarray, np.ndarray]:
+def _mesh_bounds(mesh: Mesh) -> tuple[np.ndarray, np.ndarray]:
     try:
-        import trimesh
-
-        mesh = trimesh.load(shape.filename(), force="mesh")
-        scale = np.asarray(shape.scale3()) if hasattr(shape, "scale3") else shape.scale()
-        return mesh.bounds[0] * scale, mesh.bounds[1] * scale
+        return mesh.bounds()
     except Exception:  # an unreadable mesh still gets a small box for framing
         return -np.full(3, 0.05), np.full(3, 0.05)

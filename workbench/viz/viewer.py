@@ -70,13 +70,18 @@ class Viewer:
         """Draw ``robot`` (visual geometry in its colours) at positions ``q``.
 
         Args:
-            robot: A loaded, finalized :class:`~workbench.model.Robot`.
+            robot: A loaded :class:`~workbench.model.Robot`, or a ``RobotDescription``,
+                ``urdf/`` name or path, loaded here into a plant of the viewer's own
+                (then :meth:`robot_at` gives that robot).
             q: Movable-joint positions (rad or m); default: the robot's defaults.
             prefix: Meshcat path to draw under; default ``/robots/<robot name>``.
 
         Returns:
             The Meshcat path prefix (each link is ``<prefix>/<link name>``).
         """
+        from workbench.model import as_robot
+
+        robot = as_robot(robot)
         robot.finalize()
         prefix = prefix or f"/robots/{robot.name}"
         self.meshcat.Delete(prefix)
@@ -90,6 +95,18 @@ class Viewer:
         self._shown[prefix] = _Shown(robot, prefix, visuals)
         self.set_positions(robot, robot.default_positions() if q is None else q, prefix)
         return prefix
+
+    def robot_at(self, prefix: str) -> Any:
+        """The :class:`~workbench.model.Robot` drawn under ``prefix``.
+
+        Raises:
+            ViewerError: No robot is shown there.
+        """
+        entry = self._shown.get(prefix)
+        if entry is None:
+            shown = ", ".join(self._shown) or "none"
+            raise ViewerError(f"no robot is shown at {prefix} (shown: {shown})")
+        return entry.robot
 
     def _entry(self, robot, prefix: str | None) -> _Shown:
         prefix = prefix or f"/robots/{robot.name}"
