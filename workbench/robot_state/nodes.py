@@ -11,9 +11,7 @@ XML in ``robot_description``. The nodes are declared as entry points of the
 
 from __future__ import annotations
 
-import tempfile
 from collections.abc import Sequence
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 from workbench.errors import ModelError
@@ -40,10 +38,9 @@ def load_robot_from_params(node: Node) -> Robot:
             f"{node.name}: no robot given",
             hint="set the private parameter ~robot (e.g. _robot:=robot_arm) or robot_description",
         )
-    folder = Path(tempfile.mkdtemp(prefix="robot_description_"))
-    path = folder / "robot_description.urdf"
-    path.write_text(str(xml))
-    return load_robot(path)
+    from workbench.model import RobotDescription
+
+    return load_robot(RobotDescription.from_text(str(xml)))
 
 
 def robot_state_publisher(argv: Sequence[str] = ()) -> int:

@@ -11,17 +11,14 @@ from typing import Any
 
 import numpy as np
 
+from workbench import spatial
 from workbench.tf.buffer import Buffer
 from workbench.tf.exceptions import TransformException
 
 
 def rigid_transform(translation: Any, rotation: Any) -> Any:
     """A pydrake ``RigidTransform`` from a translation (m) and a quaternion ``(x, y, z, w)``."""
-    from pydrake.common.eigen_geometry import Quaternion
-    from pydrake.math import RigidTransform
-
-    x, y, z, w = (float(v) for v in rotation)
-    return RigidTransform(Quaternion(w, x, y, z), np.asarray(translation, dtype=float))
+    return spatial.rigid_transform(translation, quaternion=rotation)
 
 
 def add_triad(meshcat: Any, path: str, length: float = 0.2, radius: float = 0.006) -> None:
