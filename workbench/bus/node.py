@@ -311,7 +311,12 @@ class Node:
                 return
             self.is_shutdown = True
             self.shutdown_reason = reason or "node shut down"
-            entities = [*self._timers, *self._subscriptions, *self._services, *self._publishers]
+            entities: list[Timer | Subscription | ServiceServer | Publisher] = [
+                *self._timers,
+                *self._subscriptions,
+                *self._services,
+                *self._publishers,
+            ]
             topics = {pub.topic for pub in self._publishers}
         for hook in self._shutdown_hooks:
             try:
