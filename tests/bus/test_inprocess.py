@@ -194,7 +194,7 @@ def test_threaded_executor_runs_callbacks_in_the_background():
         timer = node.create_timer(0.01, lambda e: ticks.release())
         assert ticks.acquire(timeout=2.0) and ticks.acquire(timeout=2.0)
         timer.shutdown()
-    assert all(not w.is_alive() for w in bus._workers)  # shutdown leaves no thread behind
+    assert all(not w.is_alive() for w in bus.executor.workers)  # shutdown leaves no thread behind
 
 
 def test_rate_follows_the_clock():

@@ -12,6 +12,8 @@ import sys
 import textwrap
 from pathlib import Path
 
+import pytest
+
 REPO = Path(__file__).resolve().parents[2]
 
 
@@ -144,3 +146,27 @@ def test_client_prints_usage_without_arguments():
     )
     assert result.returncode == 1
     assert "add_two_ints_client.py [x y]" in result.stdout
+
+
+def test_rospy_state_lives_in_one_context(monkeypatch):
+    from workbench.bus import Bus, Node
+    from workbench.compat import rospy
+    from workbench.msgs.std_msgs import String
+
+    ctx = rospy.RospyContext()
+    monkeypatch.setattr(rospy, "_CONTEXT", ctx)  # this test's own state, restored after
+    assert rospy.context() is ctx and ctx.node() is None and not rospy.is_shutdown()
+    with pytest.raises(rospy.ROSInitException, match="not initialized"):
+        rospy.get_param("/x")
+    pub = rospy.Publisher("chatter", String, queue_size=1)  # before the node: deferred
+    assert ctx.pending == [pub]
+    bus = Bus(threaded=False)
+    node = Node("ctx_test", bus=bus, disable_rosout=True)
+    got = []
+    node.create_subscription("/chatter", String, got.append)
+    ctx.adopt(node)
+    assert ctx.pending == [] and ctx.main_node is node and rospy.get_caller_id() == "/ctx_test"
+    pub.publish("bound")
+    assert bus.spin_until(lambda: got, 1.0) and got == [String(data="bound")]
+    rospy.signal_shutdown("test over")
+    assert ctx.shutdown.is_set() and rospy.is_shutdown() and bus.is_shutdown

@@ -1,4 +1,4 @@
-"""The bus: the graph's registry, parameter server, clock, executor and transport.
+"""The bus: the graph of local endpoints, parameter server, clock, executor and transports.
 
 A :class:`Bus` on its own is an in-process graph (no daemon, nothing on the
 network). ``Bus.connect(uri)`` joins a ``workbench core`` over Zenoh so nodes
@@ -16,19 +16,20 @@ from __future__ import annotations
 import os
 import sys
 import threading
-import time
-from collections import deque
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Any
 
 from workbench.bus.clock import Clock
-from workbench.bus.entities import Client, Publisher, ServiceServer, Subscription, Timer
 from workbench.bus.errors import BusError, CoreError, ServiceError, TopicTypeError
+from workbench.bus.executor import Executor
 from workbench.bus.graph import Endpoint, Graph
-from workbench.bus.params import ParameterServer
+from workbench.bus.inprocess import InProcessTransport
+from workbench.bus.local_graph import LocalGraph
 
 if TYPE_CHECKING:
+    from workbench.bus.entities import Client, Publisher, ServiceServer, Subscription, Timer
     from workbench.bus.node import Node
+    from workbench.bus.transport import Transport
 
 DEFAULT_MASTER_URI = "tcp/127.0.0.1:11311"
 
@@ -41,6 +42,10 @@ def master_uri() -> str:
 class Bus:
     """An in-process graph, optionally joined to a core.
 
+    A bus is three parts: :attr:`local` (the graph of its own nodes and endpoints),
+    :attr:`executor` (runs callbacks) and its :attr:`transports` (the in-process one,
+    plus Zenoh when joined to a core; see :class:`~workbench.bus.transport.Transport`).
+
     Args:
         threaded: Run callbacks on worker threads (default). ``False``: callbacks run only
             inside :meth:`spin_once`/:meth:`spin_until`/:meth:`spin`.
@@ -51,21 +56,15 @@ class Bus:
     def __init__(self, threaded: bool = True, workers: int = 4) -> None:
         self.threaded = threaded
         self.clock = Clock()
-        self.params: Any = ParameterServer()
         self.uri: str | None = None
-        self._workers_wanted = max(1, workers)
-        self._lock = threading.RLock()
-        self._graph_cond = threading.Condition(self._lock)
-        self._nodes: dict[str, Node] = {}
-        self._publishers: dict[str, list[Publisher]] = {}
-        self._subscriptions: dict[str, tuple[Subscription, ...]] = {}
-        self._services: dict[str, ServiceServer] = {}
-        self._timers: list[Timer] = []
-        self._ready: deque[Any] = deque()
-        self._exec_cond = threading.Condition(threading.Lock())
-        self._workers: list[threading.Thread] = []
-        self._stop_event = threading.Event()
-        self._link: Any = None
+        self.local = LocalGraph()
+        inproc = InProcessTransport(self.local)
+        self.params: Any = inproc.params
+        self.transports: tuple[Transport, ...] = (inproc,)
+        self._remote: Transport | None = None
+        self._stop = threading.Event()
+        self.executor = Executor(threaded, workers, self.clock, self.local.timers, self._stop)
+        self._sim_lock = threading.Lock()
         self._sim_time_enabled = False
 
     # --- construction -------------------------------------------------------------------
@@ -77,8 +76,11 @@ class Bus:
         Raises:
             CoreError: No core answers at ``uri``.
         """
+        from workbench.bus.zenoh_transport import ZenohTransport
+
         bus = cls(threaded=threaded)
-        bus._join(uri or master_uri())
+        uri = uri or master_uri()
+        bus.attach(ZenohTransport(bus, uri), uri)
         return bus
 
     @classmethod
@@ -108,58 +110,74 @@ class Bus:
                 )
             return cls(threaded=threaded)
 
-    def _join(self, uri: str) -> None:
-        from workbench.bus.transport import ZenohLink
+    def attach(self, transport: Transport, uri: str | None = None) -> None:
+        """Add a transport to other processes (before any node joins); its params win.
 
-        self._link = ZenohLink(self, uri)
-        self.params = self._link.params
+        Raises:
+            BusError: The bus already has nodes, or already has a remote transport.
+        """
+        if self._remote is not None or self.local.nodes():
+            raise BusError(
+                "attach a transport to a fresh bus, before any node joins it",
+                hint="create the bus, attach, then create the nodes",
+            )
+        self._remote = transport
+        self.transports = (*self.transports, transport)
+        self.params = transport.params
         self.uri = uri
 
     @property
     def is_connected(self) -> bool:
-        """Whether this bus is joined to a core."""
-        return self._link is not None
+        """Whether this bus is joined to a core (has a transport to other processes)."""
+        return self._remote is not None
 
-    # --- registry -----------------------------------------------------------------------
+    @property
+    def remote(self) -> Transport | None:
+        """The transport to other processes (Zenoh when joined to a core), or ``None``."""
+        return self._remote
 
-    def _register_node(self, node: Node) -> None:
-        with self._lock:
-            old = self._nodes.get(node.name)
-            self._nodes[node.name] = node
-        if old is not None and old is not node:
-            _replace(old)
-        if self._link is not None:
-            self._link.announce_node(node)
-        self._graph_changed()
+    # --- registry (called by nodes and entities) ----------------------------------------
 
-    def _unregister_node(self, node: Node) -> None:
-        with self._lock:
-            if self._nodes.get(node.name) is node:
-                del self._nodes[node.name]
-        if self._link is not None:
-            self._link.retract_node(node)
-        self._graph_changed()
+    def register_node(self, node: Node) -> None:
+        """Add ``node``; an older node with its name is shut down (as in ROS)."""
+        old = self.local.add_node(node)
+        if old is not None:
+            self.replace_node(old)
+        for transport in self.transports:
+            transport.announce_node(node)
+        self.graph_changed()
+
+    def unregister_node(self, node: Node) -> None:
+        self.local.remove_node(node)
+        for transport in self.transports:
+            transport.retract_node(node)
+        self.graph_changed()
+
+    def replace_node(self, node: Node, reason: str = "new node registered with same name") -> None:
+        """Shut ``node`` down with ROS's warning (a newer node took its name, or a kill)."""
+        node.get_logger().warn(f"shutdown request: [{node.name}] Reason: {reason}")
+        node.shutdown(reason)
 
     def nodes(self) -> list[Node]:
         """The nodes living in this process on this bus."""
-        with self._lock:
-            return list(self._nodes.values())
+        return self.local.nodes()
 
     def get_node(self, name: str) -> Node | None:
-        with self._lock:
-            return self._nodes.get(name)
+        return self.local.get_node(name)
 
-    def _check_topic_type(self, topic: str, type_: str, md5: str) -> None:
+    def check_topic_type(self, topic: str, type_: str, md5: str) -> None:
+        """Refuse a second message type on ``topic``.
+
+        Raises:
+            TopicTypeError: Some endpoint (here or remote) uses another type on ``topic``.
+        """
         if md5 == "*":
             return
-        ends: list[tuple[str, str, str]] = []
-        with self._lock:
-            ends += [(p.node.name, p.type, p.md5) for p in self._publishers.get(topic, [])]
-            ends += [(s.node.name, s.type, s.md5) for s in self._subscriptions.get(topic, ())]
-        if self._link is not None:
+        ends = self.local.topic_ends(topic)
+        for transport in self.transports:
             ends += [
                 (e.node, e.type, e.md5)
-                for e in self._link.remote_endpoints()
+                for e in transport.remote_endpoints()
                 if e.name == topic and e.kind in ("pub", "sub")
             ]
         for node, other_type, other_md5 in ends:
@@ -170,131 +188,107 @@ class Bus:
                     hint="use the same message type on both ends, or another topic name",
                 )
 
-    def _add_publisher(self, pub: Publisher) -> None:
-        self._check_topic_type(pub.topic, pub.type, pub.md5)
-        with self._lock:
-            self._publishers.setdefault(pub.topic, []).append(pub)
-        if self._link is not None:
-            self._link.advertise(pub)
-        self._graph_changed()
+    def add_publisher(self, pub: Publisher) -> None:
+        """Register ``pub`` and connect it to every transport."""
+        self.check_topic_type(pub.topic, pub.type, pub.md5)
+        self.local.add_publisher(pub)
+        senders = [transport.advertise(pub) for transport in self.transports]
+        pub.set_senders(tuple(send for send in senders if send is not None))
+        self.graph_changed()
 
-    def _remove_publisher(self, pub: Publisher) -> None:
-        with self._lock:
-            pubs = self._publishers.get(pub.topic, [])
-            if pub in pubs:
-                pubs.remove(pub)
-            if not pubs:
-                self._publishers.pop(pub.topic, None)
-        if self._link is not None:
-            self._link.unadvertise(pub)
-        self._graph_changed()
+    def remove_publisher(self, pub: Publisher) -> None:
+        pub.set_senders(())
+        self.local.remove_publisher(pub)
+        for transport in self.transports:
+            transport.unadvertise(pub)
+        self.graph_changed()
 
-    def _add_subscription(self, sub: Subscription) -> None:
-        self._check_topic_type(sub.topic, sub.type, sub.md5)
-        with self._lock:
-            self._subscriptions[sub.topic] = (*self._subscriptions.get(sub.topic, ()), sub)
-            latched = [
-                (p, p.last_message)
-                for p in self._publishers.get(sub.topic, [])
-                if p.latch and p.last_message is not None and sub.md5 in ("*", p.md5)
-            ]
-        for pub, msg in latched:
-            sub._enqueue(pub._raw(msg, self) if sub.raw else msg, pub.node.name)
-        if self._link is not None:
-            self._link.subscribe(sub)
-        self._graph_changed()
+    def add_subscription(self, sub: Subscription) -> None:
+        """Register ``sub``; latched messages are delivered to it now."""
+        self.check_topic_type(sub.topic, sub.type, sub.md5)
+        self.local.add_subscription(sub)
+        for transport in self.transports:
+            transport.subscribe(sub)
+        self.graph_changed()
 
-    def _remove_subscription(self, sub: Subscription) -> None:
-        with self._lock:
-            subs = tuple(s for s in self._subscriptions.get(sub.topic, ()) if s is not sub)
-            if subs:
-                self._subscriptions[sub.topic] = subs
-            else:
-                self._subscriptions.pop(sub.topic, None)
-        if self._link is not None:
-            self._link.unsubscribe(sub)
-        self._graph_changed()
+    def remove_subscription(self, sub: Subscription) -> None:
+        self.local.remove_subscription(sub)
+        for transport in self.transports:
+            transport.unsubscribe(sub)
+        self.graph_changed()
 
-    def _subscribers_of(self, topic: str) -> tuple[Subscription, ...]:
-        return self._subscriptions.get(topic, ())
+    def add_service(self, server: ServiceServer) -> None:
+        """Register ``server``.
 
-    def _add_service(self, server: ServiceServer) -> None:
-        with self._lock:
-            existing = self._services.get(server.name)
-            if existing is not None and not existing.closed:
-                raise BusError(
-                    f"service {server.name} is already offered by {existing.node.name} "
-                    "in this process",
-                    hint="shut the other server down first, or pick another name",
-                )
-            self._services[server.name] = server
-        if self._link is not None:
-            self._link.offer(server)
-        self._graph_changed()
+        Raises:
+            BusError: This process already offers the name.
+        """
+        self.local.add_service(server)
+        for transport in self.transports:
+            transport.offer(server)
+        self.graph_changed()
 
-    def _remove_service(self, server: ServiceServer) -> None:
-        with self._lock:
-            if self._services.get(server.name) is server:
-                del self._services[server.name]
-        if self._link is not None:
-            self._link.withdraw(server)
-        self._graph_changed()
+    def remove_service(self, server: ServiceServer) -> None:
+        self.local.remove_service(server)
+        for transport in self.transports:
+            transport.withdraw(server)
+        self.graph_changed()
 
-    def _add_timer(self, timer: Timer) -> None:
-        with self._lock:
-            self._timers.append(timer)
+    def add_timer(self, timer: Timer) -> None:
+        self.local.add_timer(timer)
 
-    def _remove_timer(self, timer: Timer) -> None:
-        with self._lock:
-            if timer in self._timers:
-                self._timers.remove(timer)
+    def remove_timer(self, timer: Timer) -> None:
+        self.local.remove_timer(timer)
 
-    def _graph_changed(self) -> None:
-        with self._graph_cond:
-            self._graph_cond.notify_all()
+    def graph_changed(self) -> None:
+        """Wake waiters on the graph (a transport calls it when remote endpoints change)."""
+        self.local.notify_changed()
 
     # --- services -----------------------------------------------------------------------
 
-    def _service_available(self, name: str) -> bool:
-        with self._lock:
-            if name in self._services:
-                return True
-        return self._link is not None and self._link.has_service(name)
+    def service_available(self, name: str) -> bool:
+        """Whether some transport reaches a server of ``name``."""
+        return any(transport.has_service(name) for transport in self.transports)
 
-    def _wait_for_service(self, name: str, timeout: float | None) -> bool:
-        deadline = None if timeout is None else time.monotonic() + timeout
-        with self._graph_cond:
-            while not self._service_available(name):
-                if self._stop_event.is_set():
-                    return False
-                remaining = None if deadline is None else deadline - time.monotonic()
-                if remaining is not None and remaining <= 0:
-                    return False
-                self._graph_cond.wait(0.2 if remaining is None else min(remaining, 0.2))
-        return True
+    def wait_for_service(self, name: str, timeout: float | None = None) -> bool:
+        """Wait until ``name`` is offered.
 
-    def _call_service(self, client: Client, request: Any, timeout: float | None) -> Any:
-        with self._lock:
-            server = self._services.get(client.name)
-        if server is not None and not server.closed:
-            if server.md5 != client.md5:
-                raise ServiceError(
-                    f"service {client.name} is {server.type} (md5 {server.md5}) but the client "
-                    f"calls it as {client.type} (md5 {client.md5})"
-                )
-            return server.handle(request)
-        if self._link is not None:
-            return self._link.call(client, request, timeout)
+        Returns:
+            Whether it is (``False`` after ``timeout`` seconds or on shutdown).
+        """
+        return self.local.wait_for(lambda: self.service_available(name), timeout, self._stop)
+
+    def call_service(self, client: Client, request: Any, timeout: float | None) -> Any:
+        """Call ``client``'s service through the first transport that reaches a server.
+
+        Raises:
+            ServiceError: Nobody offers it, the types differ, or the handler raised.
+            ServiceTimeout: No response within ``timeout`` seconds.
+        """
+        for transport in self.transports:
+            if transport.has_service(client.name):
+                return transport.call(client, request, timeout)
+        if self._remote is not None:  # let the remote transport say why (it may know)
+            return self._remote.call(client, request, timeout)
         raise ServiceError(
             f"service [{client.name}] unavailable",
             hint="nobody offers it; 'workbench service list' shows the offered services",
         )
 
+    def flush(self, topics: Iterable[str] | None = None) -> bool:
+        """Wait (bounded) until subscribers in other processes have what was published.
+
+        Returns:
+            Whether every subscriber confirmed in time.
+        """
+        wanted = None if topics is None else list(topics)
+        return all([transport.flush(wanted) for transport in self.transports])
+
     # --- simulated time -----------------------------------------------------------------
 
     def enable_sim_time(self, node: Node | None = None) -> None:
         """Follow ``/clock`` (rosgraph_msgs/Clock) instead of the wall clock."""
-        with self._lock:
+        with self._sim_lock:
             if self._sim_time_enabled:
                 return
             self._sim_time_enabled = True
@@ -302,78 +296,16 @@ class Bus:
         owner = node or next(iter(self.nodes()), None)
         if owner is None:
             return
-        from workbench.msgs import get_type
-
-        sub = Subscription(
-            owner,
+        clock = self.clock
+        owner.create_subscription(
             "/clock",
-            get_type("rosgraph_msgs/Clock"),
-            lambda msg: self.clock.set_time(msg.clock),
+            "rosgraph_msgs/Clock",
+            lambda msg: clock.set_time(msg.clock),
             queue_size=1,
-            direct=True,
+            inline=True,
         )
-        self._add_subscription(sub)
-        owner._subscriptions.append(sub)
 
     # --- executor -----------------------------------------------------------------------
-
-    def _schedule(self, entity: Any) -> None:
-        cond = self._exec_cond
-        with cond:
-            if entity._scheduled:
-                return
-            entity._scheduled = True
-            self._ready.append(entity)
-            cond.notify()
-        if self.threaded and len(self._workers) < self._workers_wanted:
-            self._start_workers()
-
-    def _start_workers(self) -> None:
-        with self._lock:
-            while len(self._workers) < self._workers_wanted and not self._stop_event.is_set():
-                worker = threading.Thread(
-                    target=self._work, name=f"workbench-executor-{len(self._workers)}", daemon=True
-                )
-                self._workers.append(worker)
-                worker.start()
-
-    def _work(self) -> None:
-        cond, ready, stop = self._exec_cond, self._ready, self._stop_event
-        while True:
-            with cond:
-                while not ready and not stop.is_set():
-                    cond.wait()
-                if stop.is_set():
-                    return
-                entity = ready.popleft()
-            self._run(entity, 8)
-
-    def _run(self, entity: Any, budget: int) -> None:
-        try:
-            entity._execute(budget)
-        finally:
-            with self._exec_cond:
-                if entity._pending():
-                    self._ready.append(entity)
-                    self._exec_cond.notify()
-                else:
-                    entity._scheduled = False
-
-    def _poll_timers(self) -> float | None:
-        """Stepped mode: schedule due timers; returns seconds until the next one."""
-        if self.threaded:
-            return None
-        with self._lock:
-            timers = list(self._timers)
-        soonest = None
-        now = self.clock.now_ns()
-        for timer in timers:
-            if timer._poll():
-                self._schedule(timer)
-            else:
-                wait = (timer._next_ns - now) / 1e9
-                soonest = wait if soonest is None else min(soonest, wait)
-        return soonest
 
     def spin_once(self, timeout: float = 0.0) -> bool:
         """Run at most one callback, waiting up to ``timeout`` seconds for one.
@@ -381,23 +313,7 @@ class Bus:
         Returns:
             Whether a callback ran.
         """
-        deadline = time.monotonic() + max(0.0, timeout)
-        while True:
-            next_timer = self._poll_timers()
-            with self._exec_cond:
-                if not self._ready:
-                    remaining = deadline - time.monotonic()
-                    if remaining <= 0:
-                        return False
-                    wait = remaining if next_timer is None else min(remaining, max(next_timer, 0))
-                    if self.clock.is_simulated and self._timers:
-                        wait = min(wait, 0.01)
-                    self._exec_cond.wait(wait)
-                    if not self._ready:
-                        continue
-                entity = self._ready.popleft()
-            self._run(entity, 1)
-            return True
+        return self.executor.spin_once(timeout)
 
     def spin_until(self, predicate: Callable[[], bool], timeout: float | None = None) -> bool:
         """Run callbacks until ``predicate()`` is true.
@@ -409,22 +325,14 @@ class Bus:
         Returns:
             Whether the predicate became true.
         """
-        deadline = None if timeout is None else time.monotonic() + timeout
-        while not predicate():
-            if self._stop_event.is_set():
-                return False
-            remaining = 0.05 if deadline is None else deadline - time.monotonic()
-            if remaining <= 0:
-                return bool(predicate())
-            self.spin_once(min(remaining, 0.05))
-        return True
+        return self.executor.spin_until(predicate, timeout)
 
     def spin(self) -> None:
         """Run callbacks until the bus shuts down (Ctrl-C shuts it down)."""
         try:
-            while not self._stop_event.is_set():
+            while not self._stop.is_set():
                 if self.threaded:
-                    self._stop_event.wait(0.2)
+                    self._stop.wait(0.2)
                 else:
                     self.spin_once(0.1)
         except KeyboardInterrupt:
@@ -432,7 +340,12 @@ class Bus:
 
     @property
     def is_shutdown(self) -> bool:
-        return self._stop_event.is_set()
+        return self._stop.is_set()
+
+    @property
+    def shutdown_event(self) -> threading.Event:
+        """Set when the bus shuts down (pass it to ``Clock.sleep`` to be woken)."""
+        return self._stop
 
     def shutdown(self, reason: str = "bus shut down") -> None:
         """Shut down every node, stop the executor and leave the core.
@@ -442,16 +355,11 @@ class Bus:
         """
         for node in self.nodes():
             node.shutdown(reason)
-        self._stop_event.set()
-        with self._exec_cond:
-            self._exec_cond.notify_all()
-        self._graph_changed()
-        current = threading.current_thread()
-        for worker in self._workers:
-            if worker is not current:
-                worker.join(timeout=2.0)
-        if self._link is not None:
-            self._link.close()
+        self._stop.set()
+        self.executor.stop()
+        self.graph_changed()
+        for transport in reversed(self.transports):
+            transport.close()
 
     def __enter__(self) -> Bus:
         return self
@@ -467,41 +375,31 @@ class Bus:
         """
         node = self.get_node(name)
         if node is not None:
-            _replace(node, reason)
+            self.replace_node(node, reason)
             return
-        if self._link is None or name not in self._link.remote_nodes():
-            raise BusError(f"unknown node {name}", hint="'workbench node list' shows the nodes")
-        self._link.kill(name, reason)
+        for transport in self.transports:
+            if name in transport.remote_nodes():
+                transport.kill(name, reason)
+                return
+        raise BusError(f"unknown node {name}", hint="'workbench node list' shows the nodes")
 
     # --- introspection ------------------------------------------------------------------
 
     def local_endpoints(self) -> list[Endpoint]:
-        with self._lock:
-            pubs = [p for ps in self._publishers.values() for p in ps]
-            subs = [s for ss in self._subscriptions.values() for s in ss]
-            services = list(self._services.values())
-        return (
-            [Endpoint(p.node.name, "pub", p.topic, p.type, p.md5) for p in pubs]
-            + [Endpoint(s.node.name, "sub", s.topic, s.type, s.md5) for s in subs]
-            + [Endpoint(s.node.name, "srv", s.name, s.type, s.md5) for s in services]
-        )
+        return self.local.endpoints()
 
     def graph(self) -> Graph:
         """Every node, topic and service this bus can see (all processes when joined)."""
+        pid = os.getpid()
         nodes: dict[str, tuple[bool, int | None]] = {
-            name: (True, os.getpid()) for name in list(self._nodes)
+            node.name: (True, pid) for node in self.local.nodes()
         }
-        endpoints = self.local_endpoints()
-        if self._link is not None:
-            for name, pid in self._link.remote_nodes().items():
-                nodes.setdefault(name, (False, pid))
-            endpoints += self._link.remote_endpoints()
+        endpoints = self.local.endpoints()
+        for transport in self.transports:
+            for name, remote_pid in transport.remote_nodes().items():
+                nodes.setdefault(name, (False, remote_pid))
+            endpoints += transport.remote_endpoints()
         return Graph.from_endpoints(nodes, endpoints)
-
-
-def _replace(old: Node, reason: str = "new node registered with same name") -> None:
-    old.get_logger().warn(f"shutdown request: [{old.name}] Reason: {reason}")
-    old.shutdown(reason)
 
 
 _SAID: set[str] = set()

@@ -8,8 +8,8 @@ that make up the graph (so a node that dies disappears from it).
 
 from __future__ import annotations
 
-import contextlib
 import json
+import sys
 import threading
 from typing import Any
 
@@ -117,11 +117,15 @@ class Core:
         if self._closed.is_set():
             return
         self._closed.set()
-        for item in (self._queryable, self._token):
-            with contextlib.suppress(Exception):
-                item.undeclare()
-        with contextlib.suppress(Exception):
-            self.session.close()
+        for item in (self._queryable, self._token, self.session):
+            try:
+                item.undeclare() if item is not self.session else item.close()
+            except Exception as error:  # closing goes on; say what did not close cleanly
+                print(
+                    f"[WARN] core: closing {type(item).__name__}: {type(error).__name__}: {error}",
+                    file=sys.stderr,
+                    flush=True,
+                )
 
     def __enter__(self) -> Core:
         return self

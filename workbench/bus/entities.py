@@ -1,7 +1,10 @@
 """Publishers, subscriptions, services, clients, timers and rates.
 
 Create them through a :class:`~workbench.bus.node.Node`
-(``node.create_publisher(...)`` ...), not directly.
+(``node.create_publisher(...)`` ...), not directly. They reach their bus only
+through its public methods (``add_publisher``, ``executor.schedule``,
+``call_service`` ...); transports hand messages to a subscription with
+:meth:`Subscription.deliver`.
 """
 
 from __future__ import annotations
@@ -13,6 +16,8 @@ from collections import deque
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from workbench.bus.bus import default_bus
+from workbench.bus.clock import ShutdownInterrupt
 from workbench.bus.errors import ServiceError, ServiceTimeout, ShutdownError, TopicTypeError
 from workbench.errors import MessageError
 from workbench.msgs import Message, is_service, md5sum
@@ -20,6 +25,7 @@ from workbench.msgs import Message, is_service, md5sum
 if TYPE_CHECKING:
     from collections.abc import Callable
 
+    from workbench.bus.bus import Bus
     from workbench.bus.node import Node
 
 
@@ -119,7 +125,8 @@ class Publisher:
         self.latch = latch
         self.last_message: Message | None = None
         self.closed = False
-        self._remote_put: Callable[[Message], None] | None = None
+        self._senders: tuple[Callable[[Message], None], ...] = ()
+        self._clock = node.bus.clock
         self._has_header = bool(getattr(data_class, "_has_header", False))
         self._seq = 0
 
@@ -141,28 +148,19 @@ class Publisher:
             msg.header.seq = self._seq & 0xFFFFFFFF
         if self.latch:
             self.last_message = msg
-        bus = self.node.bus
-        subs = bus._subscribers_of(self.topic)
-        if subs:
-            callerid = self.node.name
-            raw = None
-            for sub in subs:
-                if sub.md5 == self.md5 or sub.md5 == "*":
-                    if sub.raw:  # in-process messages are objects: serialize once for all
-                        if raw is None:
-                            raw = self._raw(msg, bus)
-                        sub._enqueue(raw, callerid)
-                    else:
-                        sub._enqueue(msg, callerid)
-        put = self._remote_put
-        if put is not None:
-            put(msg)
+        for send in self._senders:  # one per transport (in-process first)
+            send(msg)
 
-    def _raw(self, msg: Message, bus: Any) -> RawMessage:
+    def set_senders(self, senders: tuple[Callable[[Message], None], ...]) -> None:
+        """Called by the bus: the transports' send functions for this publisher."""
+        self._senders = senders
+
+    def to_raw(self, msg: Message) -> RawMessage:
+        """``msg`` serialized, as a raw subscription receives it (stamped now)."""
         from workbench.msgs import serialize
 
         return RawMessage(
-            serialize(msg), self.type, self.md5, bus.clock.now_ns(), self.node.name, self.topic
+            serialize(msg), self.type, self.md5, self._clock.now_ns(), self.node.name, self.topic
         )
 
     def _coerce(self, args: tuple, kwargs: dict) -> Message:
@@ -193,7 +191,7 @@ class Publisher:
         """Stop publishing (``rospy.Publisher.unregister``)."""
         if not self.closed:
             self.closed = True
-            self.node.bus._remove_publisher(self)
+            self.node.bus.remove_publisher(self)
 
     shutdown = unregister
 
@@ -233,13 +231,18 @@ class Subscription:
         self.callback_args = callback_args
         size = queue_size if queue_size and queue_size > 0 else None
         self._queue: deque[tuple[Any, str]] = deque(maxlen=size)
-        self._scheduled = False
+        self.scheduled = False
+        self._schedule = node.bus.executor.schedule
         self._direct = direct
         self.raw = raw
         self.closed = False
         self.received = 0
 
-    def _enqueue(self, msg: Any, callerid: str = "") -> None:
+    def deliver(self, msg: Any, callerid: str = "") -> None:
+        """Queue ``msg`` from the node ``callerid`` for the callback (called by transports).
+
+        With ``inline``, the callback runs now, in the calling thread.
+        """
         if self.closed:
             return
         self.received += 1
@@ -247,9 +250,9 @@ class Subscription:
             self._call(msg, callerid)
             return
         self._queue.append((msg, callerid))
-        self.node.bus._schedule(self)
+        self._schedule(self)
 
-    def _execute(self, budget: int = 8) -> int:
+    def run_pending(self, budget: int = 8) -> int:
         """Run up to ``budget`` queued callbacks; returns how many ran."""
         ran = 0
         queue = self._queue
@@ -262,7 +265,7 @@ class Subscription:
             ran += 1
         return ran
 
-    def _pending(self) -> bool:
+    def has_pending(self) -> bool:
         return bool(self._queue)
 
     def _call(self, msg: Any, callerid: str = "") -> None:
@@ -292,7 +295,7 @@ class Subscription:
         if not self.closed:
             self.closed = True
             self._queue.clear()
-            self.node.bus._remove_subscription(self)
+            self.node.bus.remove_subscription(self)
 
     shutdown = unregister
 
@@ -339,7 +342,7 @@ class ServiceServer:
     def shutdown(self, reason: str = "") -> None:
         if not self.closed:
             self.closed = True
-            self.node.bus._remove_service(self)
+            self.node.bus.remove_service(self)
 
     unregister = shutdown
 
@@ -379,14 +382,14 @@ class Client:
         Raises:
             ServiceTimeout: ``timeout`` seconds (wall time) passed first.
         """
-        if not self.node.bus._wait_for_service(self.name, timeout):
+        if not self.node.bus.wait_for_service(self.name, timeout):
             raise ServiceTimeout(
                 f"timeout exceeded while waiting for service {self.name}",
                 hint="is its server running? 'workbench service list' shows the offered services",
             )
 
     def service_is_ready(self) -> bool:
-        return self.node.bus._service_available(self.name)
+        return self.node.bus.service_available(self.name)
 
     def call(self, request: Any = None, timeout: float | None = None, **fields: Any) -> Any:
         """Call the service and return its response.
@@ -405,7 +408,7 @@ class Client:
         elif not isinstance(request, request_class):
             got = getattr(request, "_type", type(request).__name__)
             raise MessageError(f"service {self.name} needs a {request_class._type}, not a {got}")
-        return self.node.bus._call_service(self, request, timeout)
+        return self.node.bus.call_service(self, request, timeout)
 
     __call__ = call
 
@@ -425,7 +428,17 @@ class TimerEvent:
 
 
 class Timer:
-    """Calls ``callback(event)`` every ``period`` seconds of the bus clock."""
+    """Calls ``callback(event)`` every ``period`` seconds of the bus clock.
+
+    Threaded buses give each timer a thread that sleeps until the next period and
+    schedules the callback on the executor. If that thread fails (it should not: the
+    callback itself runs on the executor, and its errors are logged there), the error
+    is logged with the node and timer and the thread starts over, up to
+    :attr:`MAX_RESTARTS` times in a row; then the timer stops with a fatal log line.
+    """
+
+    #: Consecutive failures of the timer thread before the timer gives up.
+    MAX_RESTARTS = 5
 
     def __init__(
         self,
@@ -441,10 +454,12 @@ class Timer:
         self.callback = callback
         self.oneshot = oneshot
         self.closed = False
-        self._scheduled = False
+        self.scheduled = False
+        self.restarts = 0
         self._due = False
-        clock = node.bus.clock
-        self._next_ns = clock.now_ns() + int(self.period * 1e9)
+        self._clock = node.bus.clock
+        self._schedule = node.bus.executor.schedule
+        self.next_ns = self._clock.now_ns() + int(self.period * 1e9)
         self._last_expected: int | None = None
         self._last_real: int | None = None
         self._last_duration: float | None = None
@@ -452,51 +467,75 @@ class Timer:
         self._thread: threading.Thread | None = None
         if node.bus.threaded:
             self._thread = threading.Thread(
-                target=self._run, name=f"timer {node.name}", daemon=True
+                target=self._supervise, name=f"timer {node.name}", daemon=True
             )
             self._thread.start()
 
-    def _run(self) -> None:
-        clock = self.node.bus.clock
+    def __repr__(self) -> str:
+        name = getattr(self.callback, "__name__", repr(self.callback))
+        return f"Timer({name}, every {self.period} s, node {self.node.name})"
+
+    def _supervise(self) -> None:
+        failures = 0
         while not self._stop.is_set():
             try:
-                clock.sleep_until_ns(self._next_ns, self._stop)
-            except Exception:
+                self._tick()
                 return
+            except ShutdownInterrupt:  # the timer or its bus was shut down while sleeping
+                return
+            except Exception as error:
+                failures += 1
+                self.restarts += 1
+                if failures > self.MAX_RESTARTS:
+                    self.node.get_logger().fatal(
+                        f"{self!r}: its thread failed {failures} times in a row "
+                        f"({type(error).__name__}: {error}); the timer stops"
+                    )
+                    self.shutdown()
+                    return
+                self.node.get_logger().error(
+                    f"{self!r}: its thread failed ({type(error).__name__}: {error}); "
+                    f"restarting it\n{traceback.format_exc().rstrip()}"
+                )
+
+    def _tick(self) -> None:
+        clock = self._clock
+        while not self._stop.is_set():
+            clock.sleep_until_ns(self.next_ns, self._stop)
             self._due = True
-            self.node.bus._schedule(self)
+            self._schedule(self)
             if self.oneshot:
                 return
-            self._next_ns += int(self.period * 1e9)
+            self.next_ns += int(self.period * 1e9)
             now = clock.now_ns()
-            if now > self._next_ns + int(self.period * 1e9):  # fell behind, or time jumped
-                self._next_ns = now + int(self.period * 1e9)
+            if now > self.next_ns + int(self.period * 1e9):  # fell behind, or time jumped
+                self.next_ns = now + int(self.period * 1e9)
 
-    def _poll(self) -> bool:
+    def poll(self) -> bool:
         """Stepped mode: mark the timer due if its time has come."""
         if self.closed or self._due:
             return self._due
-        now = self.node.bus.clock.now_ns()
-        if now >= self._next_ns:
+        now = self._clock.now_ns()
+        if now >= self.next_ns:
             self._due = True
-            self._next_ns = self._next_ns + int(self.period * 1e9)
-            if now > self._next_ns:
-                self._next_ns = now + int(self.period * 1e9)
+            self.next_ns = self.next_ns + int(self.period * 1e9)
+            if now > self.next_ns:
+                self.next_ns = now + int(self.period * 1e9)
             return True
         return False
 
-    def _pending(self) -> bool:
+    def has_pending(self) -> bool:
         return self._due and not self.closed
 
-    def _execute(self, budget: int = 1) -> int:
+    def run_pending(self, budget: int = 1) -> int:
         if not self._due or self.closed:
             return 0
         self._due = False
         from workbench.msgs import Time
 
-        clock = self.node.bus.clock
+        clock = self._clock
         start = clock.now_ns()
-        expected = self._next_ns - int(self.period * 1e9)
+        expected = self.next_ns - int(self.period * 1e9)
         event = TimerEvent(
             None if self._last_expected is None else Time(0, self._last_expected),
             None if self._last_real is None else Time(0, self._last_real),
@@ -527,7 +566,7 @@ class Timer:
         if not self.closed:
             self.closed = True
             self._stop.set()
-            self.node.bus._remove_timer(self)
+            self.node.bus.remove_timer(self)
 
     cancel = shutdown
 
@@ -535,16 +574,11 @@ class Timer:
 class Rate:
     """Sleep so that a loop runs ``hz`` times per second of the bus clock."""
 
-    def __init__(self, hz: float, node: Node | None = None, bus: Any = None):
+    def __init__(self, hz: float, node: Node | None = None, bus: Bus | None = None):
         if not hz > 0:
             raise ValueError(f"rate must be positive, not {hz}")
         if bus is None:
-            if node is not None:
-                bus = node.bus
-            else:
-                from workbench.bus.bus import default_bus
-
-                bus = default_bus()
+            bus = node.bus if node is not None else default_bus()
         self._bus = bus
         self._period_ns = int(1e9 / hz)
         self._last_ns = bus.clock.now_ns()
@@ -564,6 +598,6 @@ class Rate:
         if now < self._last_ns:  # time went backwards (a simulation reset)
             self._last_ns = now
         deadline = self._last_ns + self._period_ns
-        clock.sleep_until_ns(deadline, self._bus._stop_event)
+        clock.sleep_until_ns(deadline, self._bus.shutdown_event)
         now = clock.now_ns()
         self._last_ns = deadline if now - deadline <= self._period_ns else now

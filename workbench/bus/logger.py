@@ -55,8 +55,14 @@ class Logger:
             )
             log.header.stamp = self.node.now()
             pub.publish(log)
-        except Exception:  # logging must never raise into user code
-            pass
+        except Exception as error:  # logging must never raise into user code
+            with contextlib.suppress(ValueError, OSError):  # a stream closed at exit
+                print(
+                    f"[ERROR] node {self.node.name}: cannot publish a log line on /rosout: "
+                    f"{type(error).__name__}: {error}",
+                    file=sys.stderr,
+                    flush=True,
+                )
 
     def debug(self, text: Any, *args: Any) -> None:
         self.log(1, text, *args)

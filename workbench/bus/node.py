@@ -7,6 +7,7 @@ import threading
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
+from workbench.bus.bus import default_bus
 from workbench.bus.entities import (
     AnyMsg,
     Client,
@@ -88,8 +89,6 @@ class Node:
         log_level: str = "info",
         disable_rosout: bool = False,
     ) -> None:
-        from workbench.bus.bus import default_bus
-
         self.bus = bus if bus is not None else default_bus()
         command = parse_command_line(list(argv or []))
         base = check_base_name(command.node_name or name)
@@ -113,7 +112,7 @@ class Node:
         self.is_shutdown = False
         self.shutdown_reason = ""
         self._logger = Logger(self, log_level)
-        self.bus._register_node(self)
+        self.bus.register_node(self)
         for key, value in command.params.items():
             self.set_param("~" + key, value)
         self._rosout: Publisher | None = None
@@ -154,7 +153,7 @@ class Node:
         if cls is AnyMsg:
             raise MessageError("a publisher needs a concrete message type")
         pub = Publisher(self, self.resolve_name(topic, "topic name"), cls, queue_size, latch)
-        self.bus._add_publisher(pub)
+        self.bus.add_publisher(pub)
         with self._lock:
             self._publishers.append(pub)
         return pub
@@ -203,7 +202,7 @@ class Node:
             direct=inline,
             raw=raw,
         )
-        self.bus._add_subscription(sub)
+        self.bus.add_subscription(sub)
         with self._lock:
             self._subscriptions.append(sub)
         return sub
@@ -221,7 +220,7 @@ class Node:
         server = ServiceServer(
             self, self.resolve_name(name, "service name"), _service_class(service_type), handler
         )
-        self.bus._add_service(server)
+        self.bus.add_service(server)
         with self._lock:
             self._services.append(server)
         return server
@@ -237,7 +236,7 @@ class Node:
         """Call ``callback(event)`` every ``period`` seconds of the bus clock."""
         self._check_alive()
         timer = Timer(self, period, callback, oneshot)
-        self.bus._add_timer(timer)
+        self.bus.add_timer(timer)
         with self._lock:
             self._timers.append(timer)
         return timer
@@ -288,7 +287,7 @@ class Node:
 
     def sleep(self, seconds: float) -> None:
         """Sleep in bus-clock seconds (raises ``ShutdownInterrupt`` on shutdown)."""
-        self.bus.clock.sleep(seconds, self.bus._stop_event)
+        self.bus.clock.sleep(seconds, self.bus.shutdown_event)
 
     # --- lifetime -----------------------------------------------------------------------
 
@@ -312,7 +311,12 @@ class Node:
                 return
             self.is_shutdown = True
             self.shutdown_reason = reason or "node shut down"
-            entities = [*self._timers, *self._subscriptions, *self._services, *self._publishers]
+            entities: list[Timer | Subscription | ServiceServer | Publisher] = [
+                *self._timers,
+                *self._subscriptions,
+                *self._services,
+                *self._publishers,
+            ]
             topics = {pub.topic for pub in self._publishers}
         for hook in self._shutdown_hooks:
             try:
@@ -321,15 +325,14 @@ class Node:
                 except TypeError:
                     hook()
             except Exception as error:
-                print(f"[ERROR] shutdown hook failed: {error}", file=sys.stderr)
-        link = self.bus._link
-        if link is not None and topics:
+                print(f"[ERROR] node {self.name}: shutdown hook failed: {error}", file=sys.stderr)
+        if topics:
             # What this node published may still be on its way to slower subscribers in
             # other processes: wait (bounded) until they have it before leaving.
-            link.flush(topics)
+            self.bus.flush(topics)
         for entity in entities:
             entity.shutdown()
-        self.bus._unregister_node(self)
+        self.bus.unregister_node(self)
 
     def __enter__(self) -> Node:
         return self

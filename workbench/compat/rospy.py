@@ -9,6 +9,9 @@ A script's node joins a running ``workbench core`` (``WORKBENCH_MASTER_URI``,
 default ``tcp/127.0.0.1:11311``) or, when none is reachable, runs in-process.
 Several scripts may also run as threads of one process: ``init_node`` binds
 the node to the calling thread, and callbacks see their own node.
+
+The module's functions are a facade over one :class:`RospyContext` (the
+process's nodes, shutdown state and hooks), made on first use.
 """
 
 from __future__ import annotations
@@ -129,28 +132,88 @@ def get_time() -> float:
     return _bus().clock.now_ns() / 1e9
 
 
-# --- the node of this thread ----------------------------------------------------------------
+# --- the process's rospy state ---------------------------------------------------------------
 
-_lock = threading.Lock()
-_main_node: Node | None = None
-_local = threading.local()
-_pending: list[Any] = []
-_shutdown = threading.Event()
-_hooks: list[Callable[..., Any]] = []
+
+class RospyContext:
+    """What rospy keeps per process: its nodes, the shutdown state and the hooks.
+
+    Attributes:
+        main_node: The first live node ``init_node`` started (the process's node).
+        shutdown: Set by :func:`signal_shutdown`; sleeps wake on it.
+        hooks: Called (without arguments) by :func:`signal_shutdown`.
+        pending: Publishers, subscribers and services created before ``init_node``.
+        throttle: Last time each ``loginfo_throttle`` call site logged.
+    """
+
+    def __init__(self) -> None:
+        self.lock = threading.Lock()
+        self.main_node: Node | None = None
+        self.shutdown = threading.Event()
+        self.hooks: list[Callable[..., Any]] = []
+        self.pending: list[_Deferred] = []
+        self.throttle: dict[tuple[str, int], float] = {}
+        self._thread = threading.local()
+
+    @property
+    def thread_node(self) -> Node | None:
+        """The node ``init_node`` started in the calling thread."""
+        return getattr(self._thread, "node", None)
+
+    @thread_node.setter
+    def thread_node(self, node: Node | None) -> None:
+        self._thread.node = node
+
+    def node(self, required: bool = False) -> Node | None:
+        """The node of the running callback, else of this thread, else the process's."""
+        node = current_node.get() or self.thread_node or self.main_node
+        if node is None and required:
+            raise ROSInitException(
+                "the node is not initialized", hint="call rospy.init_node('name') first"
+            )
+        return node
+
+    def bus(self) -> Bus:
+        """The bus of :meth:`node`, or the process's default bus."""
+        node = self.node()
+        return node.bus if node is not None else default_bus()
+
+    def adopt(self, node: Node) -> None:
+        """Make ``node`` this thread's node (and the process's if it has none alive)."""
+        self.thread_node = node
+        with self.lock:
+            if self.main_node is None or self.main_node.is_shutdown:
+                self.main_node = node
+            mine = [p for p in self.pending if p._thread is threading.current_thread()]
+            for item in mine:
+                self.pending.remove(item)
+        for item in mine:
+            item._bind(node)
+
+    def defer(self, item: _Deferred) -> None:
+        with self.lock:
+            self.pending.append(item)
+
+
+_CONTEXT: RospyContext | None = None
+_CONTEXT_LOCK = threading.Lock()
+
+
+def context() -> RospyContext:
+    """The process's :class:`RospyContext` (created on first use)."""
+    global _CONTEXT
+    with _CONTEXT_LOCK:
+        if _CONTEXT is None:
+            _CONTEXT = RospyContext()
+        return _CONTEXT
 
 
 def _node(required: bool = False) -> Node | None:
-    node = current_node.get() or getattr(_local, "node", None) or _main_node
-    if node is None and required:
-        raise ROSInitException(
-            "the node is not initialized", hint="call rospy.init_node('name') first"
-        )
-    return node
+    return context().node(required)
 
 
 def _bus() -> Bus:
-    node = _node()
-    return node.bus if node is not None else default_bus()
+    return context().bus()
 
 
 def init_node(
@@ -169,8 +232,8 @@ def init_node(
     Reads remappings from ``argv`` (default ``sys.argv``): ``chatter:=/x``,
     ``__name:=``, ``__ns:=``, ``_param:=value``. Ctrl-C shuts the node down.
     """
-    global _main_node
-    if getattr(_local, "node", None) is not None:
+    ctx = context()
+    if ctx.thread_node is not None:
         raise ROSException("rospy.init_node() has already been called with different arguments")
     args = sys.argv[1:] if argv is None else list(argv)
     level = {10: "debug", 20: "info", 30: "warn", 40: "error", 50: "fatal"}.get(log_level, "info")
@@ -189,17 +252,9 @@ def init_node(
         )
     except (BusError, MessageError) as error:
         raise ROSInitException(error.message, hint=error.hint) from None
-    _local.node = node
     # A node shut down from outside (rosnode kill, a newer node with its name) ends the script.
     node.on_shutdown(lambda *reason: signal_shutdown(reason[0] if reason else "shutdown"))
-    with _lock:
-        if _main_node is None or _main_node.is_shutdown:
-            _main_node = node
-        pending = [p for p in _pending if p._thread is threading.current_thread()]
-        for item in pending:
-            _pending.remove(item)
-    for item in pending:
-        item._bind(node)
+    ctx.adopt(node)
     if not disable_signals and threading.current_thread() is threading.main_thread():
         if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
             signal.signal(signal.SIGINT, _on_sigint)
@@ -231,25 +286,31 @@ def myargv(argv: list[str] | None = None) -> list[str]:
 
 
 def is_shutdown() -> bool:
-    node = _node()
-    return _shutdown.is_set() or (node is not None and node.is_shutdown)
+    ctx = context()
+    node = ctx.node()
+    return ctx.shutdown.is_set() or (node is not None and node.is_shutdown)
 
 
 def on_shutdown(hook: Callable[..., Any]) -> None:
-    _hooks.append(hook)
+    context().hooks.append(hook)
 
 
 def signal_shutdown(reason: str) -> None:
     """Shut the node(s) of this process down; sleeps raise ``ROSInterruptException``."""
-    if _shutdown.is_set():
+    ctx = context()
+    if ctx.shutdown.is_set():
         return
-    _shutdown.set()
-    for hook in list(_hooks):
+    ctx.shutdown.set()
+    for hook in list(ctx.hooks):
         try:
             hook()
         except Exception as error:
-            print(f"[ERROR] shutdown hook failed: {error}", file=sys.stderr)
-    node = _node()
+            print(
+                f"[ERROR] rospy shutdown hook {getattr(hook, '__name__', hook)!s} failed: "
+                f"{type(error).__name__}: {error}",
+                file=sys.stderr,
+            )
+    node = ctx.node()
     bus = node.bus if node is not None else None
     if bus is not None:
         bus.shutdown(reason)
@@ -257,10 +318,11 @@ def signal_shutdown(reason: str) -> None:
 
 def spin() -> None:
     """Block until shutdown (Ctrl-C); callbacks run meanwhile."""
-    _node(required=True)
+    ctx = context()
+    ctx.node(required=True)
     try:
         while not is_shutdown():
-            _shutdown.wait(0.2)
+            ctx.shutdown.wait(0.2)
     except KeyboardInterrupt:
         signal_shutdown("keyboard interrupt")
 
@@ -273,7 +335,8 @@ def sleep(duration: Any) -> None:
     """
     seconds = duration.to_sec() if hasattr(duration, "to_sec") else float(duration)
     try:
-        _bus().clock.sleep(seconds, _shutdown)
+        ctx = context()
+        ctx.bus().clock.sleep(seconds, ctx.shutdown)
     except ShutdownInterrupt:
         raise ROSInterruptException("ROS shutdown request") from None
 
@@ -335,16 +398,15 @@ logout = loginfo
 logerror = logerr
 logwarning = logwarn
 
-_throttle: dict[tuple[str, int], float] = {}
-
 
 def loginfo_throttle(period: float, msg: Any) -> None:
     """Log at most once per ``period`` seconds from one call site."""
     frame = sys._getframe(1)
     key = (frame.f_code.co_filename, frame.f_lineno)
     now = _time.monotonic()
-    if now - _throttle.get(key, -1e18) >= period:
-        _throttle[key] = now
+    throttle = context().throttle
+    if now - throttle.get(key, -1e18) >= period:
+        throttle[key] = now
         loginfo(msg)
 
 
@@ -397,8 +459,7 @@ class _Deferred:
         if node is not None:
             self._bind(node)
         else:
-            with _lock:
-                _pending.append(self)
+            context().defer(self)
 
     def _bind(self, node: Node) -> None:  # pragma: no cover - overridden
         raise NotImplementedError
@@ -546,10 +607,11 @@ class ServiceProxy:
         self.resolved_name = _resolve(name)
 
     def _client(self) -> Any:
-        node = _node()
+        ctx = context()
+        node = ctx.node()
         if node is None:
             node = Node("unnamed", bus=default_bus(), anonymous=True)
-            _local.node = node
+            ctx.thread_node = node
         return node.create_client(self._name, self.service_class)
 
     def __call__(self, *args: Any, **kwargs: Any) -> Any:
@@ -593,7 +655,7 @@ def wait_for_service(service: str, timeout: float | None = None) -> None:
     name = node.resolve_name(service, "service name") if node is not None else service
     if not name.startswith("/"):
         name = "/" + name
-    if not bus._wait_for_service(name, timeout):
+    if not bus.wait_for_service(name, timeout):
         raise ROSException(f"timeout exceeded while waiting for service {name}")
 
 
