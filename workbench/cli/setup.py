@@ -7,7 +7,6 @@ prints the twelve steps it performed.
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from workbench.errors import PlanningError
 
@@ -153,8 +152,6 @@ def setup(
         raise PlanningError(
             f"unknown controller '{controller}'", hint=f"use one of {', '.join(CONTROLLERS)}"
         )
-    if srdf is not None and not Path(srdf).is_file():
-        raise PlanningError(f"--srdf {srdf}: no such file", hint="give the path of an SRDF")
     planner = planner_name(planner)
     resolve_robot_path(robot)
     config = run_setup(
