@@ -34,7 +34,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
     info = verbs.add_parser("info", help="print a topic's type, publishers and subscribers")
     info.add_argument("topic")
     pub = verbs.add_parser(
-        "pub", help="publish a message built from YAML arguments", usage=PUB_USAGE
+        "pub",
+        help="publish a message built from YAML arguments",
+        usage=PUB_USAGE,
+        # rostopic's options may come first (pub -r 10 TOPIC ...), which REMAINDER refuses
+        # when they start with "-": this verb reads every word itself (parse_pub_words).
+        prefix_chars="+",
+        add_help=False,
     )
     pub.add_argument("words", nargs=argparse.REMAINDER, help=argparse.SUPPRESS)
     plot = verbs.add_parser("plot", help="plot numeric fields over time (rqt_plot)")
@@ -153,6 +159,9 @@ def pub(words: list[str]) -> int:
     Raises:
         BusError: Missing topic or type, or a bad option.
     """
+    if words[:1] in (["-h"], ["--help"]):
+        print(f"usage: {PUB_USAGE}\n\n-1 publishes once, -r RATE repeats at RATE Hz, -l latches")
+        return 0
     options = parse_pub_words(words)
     with _cli_node() as node:
         return _pub(node, options)
