@@ -21,6 +21,7 @@ from pathlib import Path
 import pytest
 
 from workbench.cli.signals import Terminated, stop_event_on_signals, stop_on_signals
+from workbench.msgs.std_msgs import String
 
 STATUS = {"INT": 130, "TERM": 143}
 
@@ -211,3 +212,16 @@ def test_stop_event_on_signals_sets_the_event_instead_of_raising():
         os.kill(os.getpid(), signal.SIGTERM)
         assert event.wait(5)
     assert stop.exit_status == 143
+
+
+@pytest.mark.multiprocess
+@pytest.mark.parametrize("sig", ["INT", "TERM"])
+def test_bag_play_in_a_loop_stops_from_a_background_job(tmp_path, sig):
+    from workbench.bag import BagWriter
+
+    with BagWriter(tmp_path / "in.bag") as bag:
+        for i in range(20):
+            bag.write("/chatter", String(data=f"m{i}"), 100.0 + 0.1 * i)
+    status, log = run_job(tmp_path, "bag play -l in.bag", "grep -q 'Opening' job.log", sig)
+    assert status == STATUS[sig], log
+    assert "Traceback" not in log
