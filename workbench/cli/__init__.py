@@ -7,13 +7,15 @@ The top level knows only the command names and one-line helps, so
     def configure(parser: argparse.ArgumentParser) -> None: ...
     def run(args: argparse.Namespace) -> int: ...
 
-and imports anything heavy (pydrake, ompl, zenoh) inside ``run``; ``run`` only
-unpacks the options and calls typed functions of the same module, which tests
-call directly. Errors
-derived from :class:`~workbench.errors.WorkbenchError` are printed as one
-line on stderr with a non-zero exit status; ``WORKBENCH_DEBUG=1`` shows the
-traceback instead. SIGINT and SIGTERM unwind a command as Ctrl-C does (its
-``finally`` blocks run) and it exits with 130 or 143.
+and imports anything heavy (pydrake, ompl, zenoh) inside ``run``. ``run`` only
+unpacks the options and calls typed functions of the same module (``plan(robot,
+goal, ...)``), which tests call directly and which check cheap things (syntax,
+names, numbers, files) before loading anything heavy. Errors derived from
+:class:`~workbench.errors.WorkbenchError` are printed as one line on stderr with
+a non-zero exit status; ``WORKBENCH_DEBUG=1`` shows the traceback instead.
+SIGINT and SIGTERM unwind a command as Ctrl-C does (its ``finally`` blocks run),
+also in a background job, and it exits with 130 or 143 (see
+:mod:`workbench.cli.signals`).
 """
 
 from __future__ import annotations

@@ -52,12 +52,8 @@ class StopRequest:
         return True
 
 
+#: The stop request of the running command (fresh for each :func:`stop_on_signals`).
 _current = StopRequest()
-
-
-def current() -> StopRequest:
-    """The stop request of the running command (fresh for each :func:`stop_on_signals`)."""
-    return _current
 
 
 def _raise_on_signal(signum: int, frame: FrameType | None) -> None:
@@ -90,7 +86,8 @@ def stop_on_signals() -> Iterator[StopRequest]:
         The :class:`StopRequest` that records which signal arrived.
     """
     global _current
-    _current = StopRequest()
+    #: The stop request of the running command (fresh for each :func:`stop_on_signals`).
+_current = StopRequest()
     with _handlers(_raise_on_signal):
         yield _current
 
