@@ -86,8 +86,7 @@ def stop_on_signals() -> Iterator[StopRequest]:
         The :class:`StopRequest` that records which signal arrived.
     """
     global _current
-    #: The stop request of the running command (fresh for each :func:`stop_on_signals`).
-_current = StopRequest()
+    _current = StopRequest()
     with _handlers(_raise_on_signal):
         yield _current
 
