@@ -71,7 +71,7 @@ def test_show_serves_until_interrupted(tmp_path):
             assert response.status == 200
             assert b"meshcat" in response.read().lower()
         process.send_signal(signal.SIGINT)
-        assert process.wait(timeout=60) == 0
+        assert process.wait(timeout=60) == 130  # stopped by SIGINT
         assert "stopped" in process.stdout.read()
     finally:
         if process.poll() is None:

@@ -114,16 +114,21 @@ class Recorder:
 
     def close(self):
         """Write what is still queued, stop subscribing and finish the bag; returns its path."""
-        self.flush()
-        for sub in self._subscriptions.values():
-            for name in ("unregister", "shutdown", "destroy"):
-                stop = getattr(sub, name, None)
-                if callable(stop):
-                    stop()
-                    break
-        self._subscriptions.clear()
-        with self._lock:
-            return self.writer.close()
+        # The bag is finished (renamed from .bag.active, index written) even when stopping
+        # the subscriptions fails or a second interrupt arrives while they stop.
+        try:
+            self.flush()
+            for sub in self._subscriptions.values():
+                for name in ("unregister", "shutdown", "destroy"):
+                    stop = getattr(sub, name, None)
+                    if callable(stop):
+                        stop()
+                        break
+            self._subscriptions.clear()
+        finally:
+            with self._lock:
+                written = self.writer.close()
+        return written
 
 
 def _published_topics(node: Any) -> dict[str, str]:

@@ -2,12 +2,10 @@
 
 from __future__ import annotations
 
-import argparse
 import os
-import signal
 import sys
-import threading
 import time
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -15,43 +13,71 @@ from workbench.bag.errors import BagError
 from workbench.bag.writer import default_bag_name
 
 
-def _install_sigterm() -> None:
-    # SIGTERM ends a recording as cleanly as Ctrl-C does (rosbag record on roslaunch shutdown)
-    if threading.current_thread() is threading.main_thread():
-        signal.signal(signal.SIGTERM, lambda *_: (_ for _ in ()).throw(KeyboardInterrupt()))
-
-
-def output_path(args: argparse.Namespace) -> Path:
+def output_path(output_name: str | None = None, output_prefix: str | None = None) -> Path:
     """rosbag's naming: ``-O NAME`` as given (``.bag`` added), else a dated name with ``-o PREFIX``."""
-    if args.output_name:
-        name = args.output_name
+    if output_name:
+        name = output_name
         return Path(name if name.endswith(".bag") else name + ".bag")
-    prefix = args.output_prefix or ""
+    prefix = output_prefix or ""
     directory = ""
     if prefix and (prefix.endswith("/") or os.path.isdir(prefix)):
         directory, prefix = prefix, ""
     return Path(directory) / default_bag_name(prefix)
 
 
-def record(args: argparse.Namespace) -> int:
-    """Record until Ctrl-C, ``--duration`` or ``--limit``; prints rosbag's lines."""
+def record(
+    topics: Sequence[str] = (),
+    *,
+    all_topics: bool = False,
+    output_name: str | None = None,
+    output_prefix: str | None = None,
+    exclude: str | None = None,
+    duration: float | None = None,
+    limit: int | None = None,
+    compression: str = "none",
+) -> int:
+    """Record until interrupted, ``duration`` or ``limit``; prints rosbag's lines.
+
+    Ctrl-C, SIGINT or SIGTERM (a KeyboardInterrupt from the command line) end the
+    recording: the bag is closed (``NAME.bag.active`` renamed to ``NAME.bag``, index
+    written) before the interrupt is reported.
+
+    Args:
+        topics: Topic names to record.
+        all_topics: Record every published topic (``-a``).
+        output_name: The bag's name (``-O``); ``.bag`` is added.
+        output_prefix: Prefix of a dated name (``-o``).
+        exclude: Regular expression of topics not to record (``-x``).
+        duration: Stop after this many seconds.
+        limit: Stop after this many messages on each topic.
+        compression: ``none``, ``bz2`` or ``lz4``.
+
+    Raises:
+        BagError: Nothing to record, or a bad duration or limit.
+    """
     from workbench.bag.record import Recorder
     from workbench.bus import Node
 
-    if not args.all and not args.topics:
+    if not all_topics and not topics:
         raise BagError("nothing to record", hint="give topic names or -a for all topics")
-    compression = "bz2" if args.bz2 else "lz4" if args.lz4 else "none"
-    path = output_path(args)
+    if duration is not None and not duration > 0:
+        raise BagError(f"--duration must be positive, got {duration:g}")
+    if limit is not None and limit < 1:
+        raise BagError(f"--limit must be at least 1, got {limit}")
+    path = output_path(output_name, output_prefix)
     node = Node("record", anonymous=True)
-    recorder = Recorder(
-        node,
-        path,
-        topics=args.topics,
-        all_topics=args.all,
-        exclude=args.exclude,
-        compression=compression,
-    )
-    _install_sigterm()
+    try:
+        recorder = Recorder(
+            node,
+            path,
+            topics=topics,
+            all_topics=all_topics,
+            exclude=exclude,
+            compression=compression,
+        )
+    except BaseException:
+        node.shutdown()
+        raise
     print(f"[ INFO] [{time.time():.9f}]: Recording to '{recorder.path}'.", flush=True)
     announced: set[str] = set()
     start = time.monotonic()
@@ -62,20 +88,22 @@ def record(args: argparse.Namespace) -> int:
                     announced.add(topic)
                     print(f"[ INFO] [{time.time():.9f}]: Subscribing to {topic}", flush=True)
             node.bus.spin_once(timeout=0.05)
-            if args.duration is not None and time.monotonic() - start >= args.duration:
+            if duration is not None and time.monotonic() - start >= duration:
                 break
             if (
-                args.limit is not None
+                limit is not None
                 and recorder.counts
-                and all(n >= args.limit for n in recorder.counts.values())
+                and all(n >= limit for n in recorder.counts.values())
             ):
                 break
     except KeyboardInterrupt:
         pass
     finally:
-        _drain(node)
-        written = recorder.close()
-        node.shutdown()
+        try:
+            _drain(node)
+        finally:
+            written = recorder.close()
+            node.shutdown()
     print(f"[ INFO] [{time.time():.9f}]: Closing '{written}'.", flush=True)
     return 0
 
@@ -101,35 +129,64 @@ def _drain(node: Any) -> None:
             break
 
 
-def play(args: argparse.Namespace) -> int:
-    """Publish a bag with its timing; prints rosbag play's opening lines and progress."""
+def play(
+    bag: str,
+    *,
+    remaps: Sequence[str] = (),
+    rate: float = 1.0,
+    delay: float = 0.2,
+    start: float = 0.0,
+    loop: bool = False,
+    clock: bool = False,
+    topics: Sequence[str] | None = None,
+    quiet: bool = False,
+) -> int:
+    """Publish a bag with its timing; prints rosbag play's opening lines and progress.
+
+    Args:
+        bag: The bag file.
+        remaps: ``/from:=/to`` topic renamings.
+        rate: Speed factor.
+        delay: Seconds to wait after advertising, before publishing.
+        start: Seconds into the bag to start at.
+        loop: Start over at the end, until interrupted.
+        clock: Publish the bag time on ``/clock``.
+        topics: Only these topics (default: all).
+        quiet: No progress line (also when stdout is not a terminal).
+
+    Raises:
+        BagError: A bad remapping, rate, delay or start, or an unreadable bag.
+    """
     from workbench.bag.play import play as play_bag
     from workbench.bag.reader import summarize
     from workbench.bus import Node
     from workbench.msgs import get_type
 
-    summary = summarize(args.bag)
-    remaps = _remaps(getattr(args, "remaps", None) or [])
+    if not rate > 0:
+        raise BagError(f"--rate must be positive, got {rate:g}")
+    if delay < 0 or start < 0:
+        raise BagError("--delay and --start must not be negative")
+    renamed = _remaps(list(remaps))
+    summary = summarize(bag)
     node = Node("play", anonymous=True)
     publishers: dict[str, Any] = {}
     for conn in summary.connections.values():
-        if args.topics and conn.topic not in args.topics:
+        if topics and conn.topic not in topics:
             continue
         if conn.topic not in publishers:
             publishers[conn.topic] = node.create_publisher(
-                remaps.get(conn.topic, conn.topic),
+                renamed.get(conn.topic, conn.topic),
                 get_type(conn.typename),
                 queue_size=1000,
                 latch=conn.latching,
             )
     clock_pub = None
-    if args.clock:
+    if clock:
         clock_pub = node.create_publisher("/clock", get_type("rosgraph_msgs/Clock"), queue_size=10)
-    print(f"[ INFO] [{time.time():.9f}]: Opening {args.bag}", flush=True)
-    print(f"\nWaiting {args.delay:g} seconds after advertising topics...", end="", flush=True)
-    _install_sigterm()
+    print(f"[ INFO] [{time.time():.9f}]: Opening {bag}", flush=True)
+    print(f"\nWaiting {delay:g} seconds after advertising topics...", end="", flush=True)
     total = (summary.end_ns - summary.start_ns) / 1e9 if summary.start_ns is not None else 0.0
-    quiet = args.quiet or not sys.stdout.isatty()
+    quiet = quiet or not sys.stdout.isatty()
     state = {"delay_done": False}
 
     def publish(topic: str, typename: str, msg: Any) -> None:
@@ -139,7 +196,7 @@ def play(args: argparse.Namespace) -> int:
         publishers[topic].publish(msg)
         node.bus.spin_once(timeout=0.0)
 
-    def clock(ns: int) -> None:
+    def publish_clock(ns: int) -> None:
         from workbench.msgs import Time
 
         clock_pub.publish(get_type("rosgraph_msgs/Clock")(clock=Time(ns // 10**9, ns % 10**9)))
@@ -154,14 +211,14 @@ def play(args: argparse.Namespace) -> int:
 
     try:
         report = play_bag(
-            args.bag,
+            bag,
             publish,
-            rate=args.rate,
-            delay=args.delay,
-            loop=args.loop,
-            clock=clock if clock_pub is not None else None,
-            start=args.start,
-            topics=args.topics,
+            rate=rate,
+            delay=delay,
+            loop=loop,
+            clock=publish_clock if clock_pub is not None else None,
+            start=start,
+            topics=topics,
             progress=progress,
         )
         if not state["delay_done"]:

@@ -7,10 +7,15 @@ The top level knows only the command names and one-line helps, so
     def configure(parser: argparse.ArgumentParser) -> None: ...
     def run(args: argparse.Namespace) -> int: ...
 
-and imports anything heavy (pydrake, ompl, zenoh) inside ``run``. Errors
-derived from :class:`~workbench.errors.WorkbenchError` are printed as one
-line on stderr with a non-zero exit status; ``WORKBENCH_DEBUG=1`` shows the
-traceback instead.
+and imports anything heavy (pydrake, ompl, zenoh) inside ``run``. ``run`` only
+unpacks the options and calls typed functions of the same module (``plan(robot,
+goal, ...)``), which tests call directly and which check cheap things (syntax,
+names, numbers, files) before loading anything heavy. Errors derived from
+:class:`~workbench.errors.WorkbenchError` are printed as one line on stderr with
+a non-zero exit status; ``WORKBENCH_DEBUG=1`` shows the traceback instead.
+SIGINT and SIGTERM unwind a command as Ctrl-C does (its ``finally`` blocks run),
+also in a background job, and it exits with 130 or 143 (see
+:mod:`workbench.cli.signals`).
 """
 
 from __future__ import annotations
@@ -19,6 +24,7 @@ import argparse
 import importlib
 import importlib.util
 import os
+import signal
 import sys
 from collections.abc import Sequence
 
@@ -88,8 +94,28 @@ def _report(command: str, error: WorkbenchError) -> int:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Run the command line; returns the process exit status."""
+    """Run the command line; returns the process exit status.
+
+    SIGINT and SIGTERM stop a command cleanly even in a background job (see
+    :mod:`workbench.cli.signals`); it then exits with 130 or 143.
+    """
+    from workbench.cli.signals import Terminated, stop_on_signals
+
     args = list(sys.argv[1:] if argv is None else argv)
+    with stop_on_signals() as stop:
+        try:
+            status = _dispatch(args)
+        except Terminated:
+            return 128 + signal.SIGTERM
+        except KeyboardInterrupt:
+            return 128 + signal.SIGINT
+    if stop.exit_status is not None and status == 0:
+        # The command caught the interrupt and finalised: report how it was stopped.
+        return stop.exit_status
+    return status
+
+
+def _dispatch(args: list[str]) -> int:
     commands = available_commands()
     if not args or args[0] not in commands:
         # --help, --version, no command, or an unknown one: argparse says it.
@@ -116,8 +142,6 @@ def main(argv: Sequence[str] | None = None) -> int:
             hint=f"pip install 'workbench[{extra}]'",
         )
         return _report(command, missing)
-    except KeyboardInterrupt:
-        return 130
     except BrokenPipeError:
         # `workbench topic echo ... | head` closes stdout early: not an error.
         sys.stderr.close()

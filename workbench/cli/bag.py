@@ -3,11 +3,19 @@
 from __future__ import annotations
 
 import argparse
+from collections.abc import Sequence
+
+from workbench.bag.errors import BagError
+from workbench.bag.session import play, record
+
+__all__ = ["compression", "configure", "info", "play", "record", "run"]
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
     verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
-    record = verbs.add_parser("record", help="record topics into a bag (Ctrl-C to stop)")
+    record = verbs.add_parser(
+        "record", help="record topics into a bag (Ctrl-C, SIGINT or SIGTERM stops and closes it)"
+    )
     record.add_argument("topics", nargs="*", help="topics to record")
     record.add_argument("-a", "--all", action="store_true", help="record all topics")
     record.add_argument("-O", "--output-name", metavar="NAME", help="bag file name")
@@ -39,19 +47,46 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     if args.verb == "info":
-        return _info(args)
+        return info(args.bags)
     if args.verb == "record":
-        from workbench.bag.session import record
+        return record(
+            args.topics,
+            all_topics=args.all,
+            output_name=args.output_name,
+            output_prefix=args.output_prefix,
+            exclude=args.exclude,
+            duration=args.duration,
+            limit=args.limit,
+            compression=compression(bz2=args.bz2, lz4=args.lz4),
+        )
+    return play(
+        args.bag,
+        remaps=args.remaps,
+        rate=args.rate,
+        delay=args.delay,
+        start=args.start,
+        loop=args.loop,
+        clock=args.clock,
+        topics=args.topics,
+        quiet=args.quiet,
+    )
 
-        return record(args)
-    from workbench.bag.session import play
 
-    return play(args)
+def compression(*, bz2: bool = False, lz4: bool = False) -> str:
+    """The chunk compression of ``-j`` / ``--lz4``.
+
+    Raises:
+        BagError: Both were given.
+    """
+    if bz2 and lz4:
+        raise BagError("choose one compression", hint="give -j (bz2) or --lz4, not both")
+    return "bz2" if bz2 else "lz4" if lz4 else "none"
 
 
-def _info(args: argparse.Namespace) -> int:
+def info(bags: Sequence[str]) -> int:
+    """Print rosbag info's summary of each bag (separated by a blank line)."""
     from workbench.bag import format_info, summarize
 
-    texts = [format_info(summarize(path), name=path) for path in args.bags]
+    texts = [format_info(summarize(path), name=path) for path in bags]
     print("\n\n".join(texts))
     return 0

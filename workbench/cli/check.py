@@ -30,37 +30,57 @@ def _display_path(argument: str, resolved) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
+    return check(args.file, as_json=args.json, load=not args.no_load)
+
+
+def check(file: str, *, as_json: bool = False, load: bool = True) -> int:
+    """check_urdf's report of a description plus workbench's findings, as text or JSON.
+
+    Args:
+        file: A ``.urdf``, ``.sdf`` or ``.xacro`` path, or a name from ``urdf/``.
+        as_json: Print the report as JSON (an unreadable file is reported there too).
+        load: Also load the model into Drake (slower; finds what only Drake rejects).
+
+    Returns:
+        0 when there is no error (warnings allowed), else 1.
+
+    Raises:
+        ModelError: The file cannot be read (text output only).
+    """
     from workbench.errors import ModelError
     from workbench.model.check import check_robot
 
     try:
-        report = check_robot(args.file, load=not args.no_load)
+        report = check_robot(file, load=load)
     except ModelError as error:
-        if not args.json:
+        if not as_json:
             raise
-        finding = {
-            "severity": "error",
-            "code": "unreadable",
-            "element": "file",
-            "message": error.message,
-            "hint": error.hint or "",
-            "line": error.line,
-        }
-        document = {
-            "path": error.path or args.file,
-            "ok": False,
-            "errors": 1,
-            "warnings": 0,
-            "loaded": False,
-            "robot": None,
-            "root": None,
-            "tree": [],
-            "findings": [finding],
-        }
-        print(json.dumps(document, indent=2))
+        print(json.dumps(_unreadable(file, error), indent=2))
         return 1
-    if args.json:
+    if as_json:
         print(json.dumps(report.to_dict(), indent=2))
     else:
-        sys.stdout.write(report.format(_display_path(args.file, report.path)))
+        sys.stdout.write(report.format(_display_path(file, report.path)))
     return 0 if report.ok else 1
+
+
+def _unreadable(file: str, error) -> dict:
+    finding = {
+        "severity": "error",
+        "code": "unreadable",
+        "element": "file",
+        "message": error.message,
+        "hint": error.hint or "",
+        "line": error.line,
+    }
+    return {
+        "path": error.path or file,
+        "ok": False,
+        "errors": 1,
+        "warnings": 0,
+        "loaded": False,
+        "robot": None,
+        "root": None,
+        "tree": [],
+        "findings": [finding],
+    }

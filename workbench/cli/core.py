@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import argparse
-import signal
+from typing import Any
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -22,31 +22,52 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from workbench.bus.bus import master_uri
-    from workbench.bus.core import Core
+    return core(uri=args.uri, allow_remote=args.allow_remote, params_file=args.params)
+
+
+def read_params(path: str) -> dict[str, Any]:
+    """The parameter mapping of a YAML file.
+
+    Raises:
+        CoreError: The file cannot be read or does not hold a mapping.
+    """
+    import yaml
+
     from workbench.bus.errors import CoreError
 
-    params = None
-    if args.params:
-        import yaml
-
-        try:
-            with open(args.params) as stream:
-                params = yaml.safe_load(stream) or {}
-        except (OSError, yaml.YAMLError) as error:
-            raise CoreError(f"cannot read parameters: {error}", path=args.params) from None
-        if not isinstance(params, dict):
-            raise CoreError("the parameter file must hold a YAML mapping", path=args.params)
-    uri = args.uri or master_uri()
-    core = Core(uri, allow_remote=args.allow_remote, params=params)
-    signal.signal(signal.SIGTERM, lambda *_: core.close())
-    print(f"started core service [{uri}]", flush=True)
-    print(f"nodes find it with WORKBENCH_MASTER_URI={uri} (Ctrl-C to stop)", flush=True)
     try:
-        core.wait()
+        with open(path) as stream:
+            params = yaml.safe_load(stream) or {}
+    except (OSError, yaml.YAMLError) as error:
+        raise CoreError(f"cannot read parameters: {error}", path=path) from None
+    if not isinstance(params, dict):
+        raise CoreError("the parameter file must hold a YAML mapping", path=path)
+    return params
+
+
+def core(
+    *, uri: str | None = None, allow_remote: bool = False, params_file: str | None = None
+) -> int:
+    """Serve the parameter server and registry until interrupted (SIGINT or SIGTERM).
+
+    Args:
+        uri: Where to listen (default: ``$WORKBENCH_MASTER_URI`` or ``tcp/127.0.0.1:11311``).
+        allow_remote: Allow a non-loopback address.
+        params_file: A YAML file of parameters loaded at start.
+    """
+    from workbench.bus.bus import master_uri
+    from workbench.bus.core import Core
+
+    params = read_params(params_file) if params_file else None
+    uri = uri or master_uri()
+    server = Core(uri, allow_remote=allow_remote, params=params)
+    try:
+        print(f"started core service [{uri}]", flush=True)
+        print(f"nodes find it with WORKBENCH_MASTER_URI={uri} (Ctrl-C to stop)", flush=True)
+        server.wait()
     except KeyboardInterrupt:
         pass
     finally:
-        core.close()
+        server.close()
         print("shutting down core service", flush=True)
     return 0

@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import argparse
 
+FORMATS = ("pdf", "svg", "png")
+
 
 def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("file", help="a .urdf or .xacro file, or a name from urdf/")
     parser.add_argument(
         "--format",
-        choices=("pdf", "svg", "png"),
+        choices=FORMATS,
         help="rendering format (default: pdf, or the suffix of -o)",
     )
     parser.add_argument(
@@ -21,25 +23,42 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    return graph(args.file, fmt=args.format, output=args.output)
+
+
+def graph(file: str, *, fmt: str | None = None, output: str | None = None) -> int:
+    """urdf_to_graphviz: write NAME.gv and its rendering (NAME.pdf) into the current folder.
+
+    Args:
+        file: A ``.urdf`` or ``.xacro`` path, or a name from ``urdf/``.
+        fmt: ``pdf``, ``svg`` or ``png`` (default: pdf, or the suffix of ``output``).
+        output: Write the rendering here (and the graph beside it as ``.gv``); a ``.gv``
+            path writes only the graph.
+
+    Raises:
+        ModelError: An unknown format, an unreadable description, or dot is missing.
+    """
     from pathlib import Path
 
+    from workbench.errors import ModelError
     from workbench.model.graph import write_graph
     from workbench.model.loader import load_document
 
-    document = load_document(args.file)
-    if args.output:
-        out = Path(args.output)
+    if fmt is not None and fmt not in FORMATS:
+        raise ModelError(f"unknown format '{fmt}'", hint=f"use one of {', '.join(FORMATS)}")
+    document = load_document(file)
+    if output:
+        out = Path(output)
         if out.suffix == ".gv":
             gv, rendered = out, None
         else:
             gv, rendered = out.with_suffix(".gv"), out
     else:
-        fmt = args.format or "pdf"
-        gv, rendered = Path(f"{document.name}.gv"), Path(f"{document.name}.{fmt}")
+        gv, rendered = Path(f"{document.name}.gv"), Path(f"{document.name}.{fmt or 'pdf'}")
     # The .gv is announced before rendering, so it is reported even when dot is missing.
     written = write_graph(document, gv, None)
     print(f"Created file {written[0]}")
     if rendered is not None:
-        written = write_graph(document, gv, rendered, args.format)
+        written = write_graph(document, gv, rendered, fmt)
         print(f"Created file {written[1]}")
     return 0

@@ -18,21 +18,46 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from workbench.introspect.definitions import show_message
-    from workbench.msgs import get_type, list_services, list_types, md5sum
-
     if args.verb == "show":
-        print(show_message(args.type))
-    elif args.verb == "md5":
-        print(md5sum(get_type(args.type)._type))
-    else:
-        parts = {
-            f"{s}{end}" for s in list_services(args.package) for end in ("Request", "Response")
-        }
-        names = [n for n in list_types(args.package) if n not in parts]
-        if not names and args.package:
-            from workbench.errors import MessageError
+        return show(args.type)
+    if args.verb == "md5":
+        return md5(args.type)
+    return list_messages(args.package)
 
-            raise MessageError(f"no message types in package '{args.package}'")
-        print("\n".join(names))
+
+def show(type_name: str) -> int:
+    """rosmsg show: a message's fields, nested types expanded.
+
+    Raises:
+        MessageError: An unknown type (naming close matches).
+    """
+    from workbench.introspect.definitions import show_message
+
+    print(show_message(type_name))
+    return 0
+
+
+def md5(type_name: str) -> int:
+    """rosmsg md5: a message's md5sum."""
+    from workbench.msgs import get_type, md5sum
+
+    print(md5sum(get_type(type_name)._type))
+    return 0
+
+
+def list_messages(package: str | None = None) -> int:
+    """rosmsg list / package: the message types (of one package), without service parts.
+
+    Raises:
+        MessageError: The package has no message types.
+    """
+    from workbench.msgs import list_services, list_types
+
+    parts = {f"{s}{end}" for s in list_services(package) for end in ("Request", "Response")}
+    names = [n for n in list_types(package) if n not in parts]
+    if not names and package:
+        from workbench.errors import MessageError
+
+        raise MessageError(f"no message types in package '{package}'")
+    print("\n".join(names))
     return 0

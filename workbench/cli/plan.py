@@ -55,7 +55,31 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--csv", metavar="OUT", help="write the trajectory as CSV")
 
 
-def _scene_path(text: str) -> Path:
+def run(args: argparse.Namespace) -> int:
+    return plan(
+        args.robot,
+        args.to,
+        start=args.start,
+        group=args.group,
+        planner=args.planner,
+        scene=args.scene,
+        seed=args.seed,
+        time_limit=args.time_limit,
+        config_dir=args.config,
+        execute=args.execute,
+        html=args.html,
+        plot=args.plot,
+        json_out=args.json,
+        csv_out=args.csv,
+    )
+
+
+def scene_path(text: str) -> Path:
+    """A scene YAML given as a path or as a name in ``planning/scenes/``.
+
+    Raises:
+        SceneError: Neither exists; names the available scenes.
+    """
     from workbench.paths import planning_dir
     from workbench.planning.errors import SceneError
 
@@ -72,7 +96,140 @@ def _scene_path(text: str) -> Path:
     )
 
 
+def check_options(
+    goal: str,
+    *,
+    start: str | None = None,
+    planner: str | None = None,
+    seed: int = 0,
+    time_limit: float | None = None,
+    outputs: tuple[str | None, ...] = (),
+) -> str | None:
+    """The checks that need no robot: goal syntax, planner name, numbers, output folders.
+
+    Returns:
+        The canonical planner name, or None for the configuration's default.
+
+    Raises:
+        GoalError: A malformed goal or start, a negative seed or a non-positive time limit.
+        UnknownPlannerError: An unknown planner (naming close matches).
+        PlanningError: An output file's folder does not exist.
+    """
+    from workbench.errors import PlanningError
+    from workbench.planning.errors import GoalError
+    from workbench.planning.goals import parse_goal
+    from workbench.planning.ompl_planner import planner_name
+
+    if time_limit is not None and not time_limit > 0:
+        raise GoalError(f"--time-limit must be positive, got {time_limit:g}")
+    if seed < 0:
+        raise GoalError(f"--seed must not be negative, got {seed}")
+    parse_goal(goal)
+    if start is not None:
+        parse_goal(start)
+    for out in outputs:
+        if out is not None and not Path(out).resolve().parent.is_dir():
+            raise PlanningError(
+                f"cannot write {out}: its folder does not exist", hint="create it first"
+            )
+    return planner_name(planner) if planner is not None else None
+
+
+def plan(
+    robot: str,
+    goal: str,
+    *,
+    start: str | None = None,
+    group: str | None = None,
+    planner: str | None = None,
+    scene: str | None = None,
+    seed: int = 0,
+    time_limit: float | None = None,
+    config_dir: str | None = None,
+    execute: bool = False,
+    html: str | None = None,
+    plot: str | None = None,
+    json_out: str | None = None,
+    csv_out: str | None = None,
+) -> int:
+    """Plan, time and re-check a motion of ``robot`` to ``goal``; optionally execute it.
+
+    Everything that can be checked without Drake (goal and start syntax, named states,
+    joint count and limits, planner name, scene file, numbers, output folders) is checked
+    before the planner is built, so a bad request fails within a second.
+
+    Args:
+        robot: A ``urdf/`` name or a description path.
+        goal: ``home`` (a named state), ``random``, ``q=J1,...`` (rad or m) or
+            ``xyz=X,Y,Z[,rpy=R,P,Y]`` (m, rad; world frame).
+        start: The start, same forms (default: ``home``, else zeros).
+        group: Planning group (default: the configuration's).
+        planner: OMPL planner (default: the configuration's).
+        scene: Obstacles: a YAML path or a name in ``planning/scenes/``.
+        seed: Seed of the planner, a random goal and IK.
+        time_limit: Planning time limit, s.
+        config_dir: Planning configuration directory (default ``planning/ROBOT/``); written
+            by the setup assistant first when missing.
+        execute: Execute the plan in simulation.
+        html: Write a Meshcat snapshot with the animation here.
+        plot: Write a PNG of q, qd, qdd against the limits here.
+        json_out, csv_out: Write the trajectory as JSON / CSV here.
+
+    Raises:
+        PlanningError: The request is invalid or no plan was found (a subclass says which).
+    """
+    from workbench.planning.goals import check_goal, group_outline
+
+    planner = check_options(
+        goal,
+        start=start,
+        planner=planner,
+        seed=seed,
+        time_limit=time_limit,
+        outputs=(html, plot, json_out, csv_out),
+    )
+    from workbench.planning.scene import load_scene
+
+    obstacles = load_scene(scene_path(scene)) if scene else None
+    config = _load_or_setup(robot, config_dir)
+    outline = group_outline(config, group)
+    if outline is not None:
+        check_goal(goal, outline)
+        if start is not None:
+            check_goal(start, outline, "start")
+
+    from workbench.planning.output import summary_table, write_csv, write_json
+    from workbench.planning.pipeline import MotionPlanner
+
+    motion = MotionPlanner(config=config, scene=obstacles, group=group)
+    result = motion.plan(goal, start=start, planner=planner, time_limit=time_limit, seed=seed)
+    print(f"plan for '{motion.robot.name}' group '{motion.group}' to {goal}")
+    print(summary_table(result))
+    if json_out:
+        print(f"wrote {write_json(result.trajectory, json_out)}")
+    if csv_out:
+        print(f"wrote {write_csv(result.trajectory, csv_out)}")
+    if plot:
+        from workbench.planning.output import plot_png
+
+        print(f"wrote {plot_png(result.trajectory, plot, motion.lower, motion.upper)}")
+    if execute:
+        from workbench.planning.execute import execute as execute_plan
+
+        print(execute_plan(motion, result).summary())
+    if html:
+        from workbench.planning.output import animate, show_scene
+        from workbench.viz import Viewer
+
+        viewer = Viewer.instance()
+        show_scene(viewer, motion.scene)
+        animate(viewer, motion.robot, motion.joints, result.trajectory)
+        print(f"wrote {viewer.save_html(html)}")
+    return 0
+
+
 def _load_or_setup(robot: str, config_dir: str | None):
+    from workbench.model.sources import resolve_robot_path
     from workbench.planning.config import ConfigNotFoundError, find_config, load_config
     from workbench.planning.config import config_dir as default_dir
     from workbench.planning.setup import run_setup
@@ -82,6 +239,7 @@ def _load_or_setup(robot: str, config_dir: str | None):
         return load_config(target if target is not None else robot)
     except ConfigNotFoundError:
         pass
+    resolve_robot_path(robot)  # an unknown robot fails here, naming the available ones
     if target is None:
         try:
             find_config(robot)
@@ -90,47 +248,3 @@ def _load_or_setup(robot: str, config_dir: str | None):
     print(f"no planning configuration for '{robot}': running setup first (writing {target}/)")
     run_setup(robot, out_dir=target)
     return load_config(target)
-
-
-def run(args: argparse.Namespace) -> int:
-    from workbench.planning.errors import GoalError
-    from workbench.planning.output import summary_table, write_csv, write_json
-    from workbench.planning.pipeline import MotionPlanner
-    from workbench.planning.scene import load_scene
-
-    if args.time_limit is not None and not args.time_limit > 0:
-        raise GoalError(f"--time-limit must be positive, got {args.time_limit:g}")
-    scene = load_scene(_scene_path(args.scene)) if args.scene else None
-    config = _load_or_setup(args.robot, args.config)
-    planner = MotionPlanner(config=config, scene=scene, group=args.group)
-    result = planner.plan(
-        args.to,
-        start=args.start,
-        planner=args.planner,
-        time_limit=args.time_limit,
-        seed=args.seed,
-    )
-    print(f"plan for '{planner.robot.name}' group '{planner.group}' to {args.to}")
-    print(summary_table(result))
-    if args.json:
-        print(f"wrote {write_json(result.trajectory, args.json)}")
-    if args.csv:
-        print(f"wrote {write_csv(result.trajectory, args.csv)}")
-    if args.plot:
-        from workbench.planning.output import plot_png
-
-        print(f"wrote {plot_png(result.trajectory, args.plot, planner.lower, planner.upper)}")
-    if args.execute:
-        from workbench.planning.execute import execute
-
-        report = execute(planner, result)
-        print(report.summary())
-    if args.html:
-        from workbench.planning.output import animate, show_scene
-        from workbench.viz import Viewer
-
-        viewer = Viewer.instance()
-        show_scene(viewer, planner.scene)
-        animate(viewer, planner.robot, planner.joints, result.trajectory)
-        print(f"wrote {viewer.save_html(args.html)}")
-    return 0

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
+from collections.abc import Iterator
 from typing import Any
 
 
@@ -24,40 +26,96 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from workbench.introspect import graphtext
+    if args.verb == "list":
+        return list_services(nodes=args.nodes)
+    if args.verb == "type":
+        return service_type(args.service)
+    if args.verb == "find":
+        return find(args.type)
+    if args.verb == "info":
+        return info(args.service)
+    return call(args.service, [w for w in args.args if w != "--"])
+
+
+@contextlib.contextmanager
+def _session() -> Iterator[tuple[Any, Any]]:
+    """The tool's own node and the bus graph."""
     from workbench.introspect.session import cli_node, graph
 
     node = cli_node("rosservice")
     try:
-        g = graph(node.bus)
-        if args.verb == "list":
-            text = graphtext.service_list(g, nodes=args.nodes)
-        elif args.verb == "type":
-            text = graphtext.require_service(g, args.service).type
-        elif args.verb == "find":
-            from workbench.msgs import get_service
-
-            text = graphtext.service_find(g, get_service(args.type)._type)
-        elif args.verb == "info":
-            text = graphtext.service_info(g, args.service)
-        else:
-            text = _call(node, g, args)
-        if text:
-            print(text)
-        return 0
+        yield node, graph(node.bus)
     finally:
         node.shutdown()
 
 
-def _call(node: Any, g: Any, args: argparse.Namespace) -> str:
+def _print(text: str) -> int:
+    if text:
+        print(text)
+    return 0
+
+
+def list_services(*, nodes: bool = False) -> int:
+    """rosservice list: the offered services (with the nodes offering them)."""
+    from workbench.introspect import graphtext
+
+    with _session() as (_, g):
+        return _print(graphtext.service_list(g, nodes=nodes))
+
+
+def service_type(service: str) -> int:
+    """rosservice type: a service's type.
+
+    Raises:
+        BusError: No such service.
+    """
+    from workbench.introspect import graphtext
+
+    with _session() as (_, g):
+        return _print(graphtext.require_service(g, service).type)
+
+
+def find(type_name: str) -> int:
+    """rosservice find: the services of a type.
+
+    Raises:
+        MessageError: An unknown service type.
+    """
+    from workbench.introspect import graphtext
+    from workbench.msgs import get_service
+
+    kind = get_service(type_name)._type  # an unknown type fails before joining the bus
+    with _session() as (_, g):
+        return _print(graphtext.service_find(g, kind))
+
+
+def info(service: str) -> int:
+    """rosservice info: the node, type and arguments of a service."""
+    from workbench.introspect import graphtext
+
+    with _session() as (_, g):
+        return _print(graphtext.service_info(g, service))
+
+
+def call(service: str, words: list[str]) -> int:
+    """rosservice call: call ``service`` with request fields in order, or a YAML dict.
+
+    Raises:
+        BusError: No such service, or no answer within 10 s.
+        MessageError: The arguments do not fit the request (naming its fields).
+    """
+    with _session() as (node, g):
+        return _print(_call(node, g, service, words))
+
+
+def _call(node: Any, g: Any, service_name: str, words: list[str]) -> str:
     from workbench.errors import MessageError
     from workbench.introspect.args import message_from_args
     from workbench.introspect.echo import format_value
     from workbench.introspect.graphtext import require_service
     from workbench.msgs import get_service
 
-    words = [w for w in args.args if w != "--"]
-    record = require_service(g, args.service)
+    record = require_service(g, service_name)
     service = get_service(record.type)
     fields = " ".join(service.Request.__slots__) or "no arguments"
     try:

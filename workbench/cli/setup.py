@@ -10,6 +10,8 @@ import argparse
 
 from workbench.errors import PlanningError
 
+CONTROLLERS = ("inverse_dynamics", "pid")
+
 
 def configure(parser: argparse.ArgumentParser) -> None:
     parser.description = (
@@ -54,9 +56,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
         default=0.01,
         help="joint-space step between edge checks (rad)",
     )
-    parser.add_argument(
-        "--controller", choices=("inverse_dynamics", "pid"), default="inverse_dynamics"
-    )
+    parser.add_argument("--controller", choices=CONTROLLERS, default="inverse_dynamics")
     parser.add_argument("--author", metavar="'NAME <EMAIL>'", help="author information")
     parser.add_argument(
         "--matrix", action="store_true", help="also print the whole self-collision matrix"
@@ -65,44 +65,118 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from workbench.planning.setup import run_setup
-
-    if args.samples < 0:
-        raise PlanningError(f"--samples must be >= 0, got {args.samples}")
-    for name in ("velocity_scaling", "acceleration_scaling"):
-        value = getattr(args, name)
-        if not 0 < value <= 1:
-            raise PlanningError(f"--{name.replace('_', '-')} must be in (0, 1], got {value}")
-    if not args.edge_resolution > 0:
-        raise PlanningError(f"--edge-resolution must be positive, got {args.edge_resolution}")
     hand_links = None
     if args.no_hand:
         hand_links = []
     elif args.hand_links:
         hand_links = [name.strip() for name in args.hand_links.split(",") if name.strip()]
-    config = run_setup(
+    return setup(
         args.robot,
-        out_dir=args.output,
+        output=args.output,
         samples=args.samples,
         seed=args.seed,
         srdf=args.srdf,
         group=args.group,
-        base_link=args.base,
-        tip_link=args.tip,
+        base=args.base,
+        tip=args.tip,
         hand_links=hand_links,
         hand=args.hand,
         poses=dict(_parse_pose(text) for text in args.pose),
-        passive_joints=args.passive,
+        passive=args.passive,
         planner=args.planner,
         velocity_scaling=args.velocity_scaling,
         acceleration_scaling=args.acceleration_scaling,
         edge_resolution=args.edge_resolution,
-        controller_type=args.controller,
+        controller=args.controller,
         author=_parse_author(args.author),
-        write=not args.dry_run,
+        matrix=args.matrix,
+        dry_run=args.dry_run,
+    )
+
+
+def setup(
+    robot: str,
+    *,
+    output: str | None = None,
+    samples: int = 10000,
+    seed: int = 0,
+    srdf: str | None = None,
+    group: str = "arm",
+    base: str | None = None,
+    tip: str | None = None,
+    hand_links: list[str] | None = None,
+    hand: str = "hand",
+    poses: dict[str, list[float]] | None = None,
+    passive: list[str] | None = None,
+    planner: str = "RRTConnect",
+    velocity_scaling: float = 1.0,
+    acceleration_scaling: float = 1.0,
+    edge_resolution: float = 0.01,
+    controller: str = "inverse_dynamics",
+    author: dict[str, str] | None = None,
+    matrix: bool = False,
+    dry_run: bool = False,
+) -> int:
+    """The setup assistant: write ``planning/ROBOT/ROBOT.srdf`` and ``planning.yaml``.
+
+    The options are checked (numbers, planner name, files, the robot's name) before the
+    collision matrix is sampled. See ``workbench setup --help`` for each option; joint
+    values are rad or m, ``edge_resolution`` is rad.
+
+    Args:
+        hand_links: Links of the hand group; ``[]`` for none, None to infer them.
+        poses: Named arm poses, one value per arm joint.
+        matrix: Also print the whole self-collision matrix.
+        dry_run: Print the steps, write nothing.
+
+    Raises:
+        PlanningError: A bad option, an unknown robot or planner, or a setup step failed.
+    """
+    from workbench.model.sources import resolve_robot_path
+    from workbench.planning.ompl_planner import planner_name
+    from workbench.planning.setup import run_setup
+
+    if samples < 0:
+        raise PlanningError(f"--samples must be >= 0, got {samples}")
+    if seed < 0:
+        raise PlanningError(f"--seed must not be negative, got {seed}")
+    for name, value in (
+        ("velocity-scaling", velocity_scaling),
+        ("acceleration-scaling", acceleration_scaling),
+    ):
+        if not 0 < value <= 1:
+            raise PlanningError(f"--{name} must be in (0, 1], got {value}")
+    if not edge_resolution > 0:
+        raise PlanningError(f"--edge-resolution must be positive, got {edge_resolution}")
+    if controller not in CONTROLLERS:
+        raise PlanningError(
+            f"unknown controller '{controller}'", hint=f"use one of {', '.join(CONTROLLERS)}"
+        )
+    planner = planner_name(planner)
+    resolve_robot_path(robot)
+    config = run_setup(
+        robot,
+        out_dir=output,
+        samples=samples,
+        seed=seed,
+        srdf=srdf,
+        group=group,
+        base_link=base,
+        tip_link=tip,
+        hand_links=hand_links,
+        hand=hand,
+        poses=poses or {},
+        passive_joints=passive or [],
+        planner=planner,
+        velocity_scaling=velocity_scaling,
+        acceleration_scaling=acceleration_scaling,
+        edge_resolution=edge_resolution,
+        controller_type=controller,
+        author=author,
+        write=not dry_run,
         log=print,
     )
-    if args.matrix and config.collision_matrix is not None:
+    if matrix and config.collision_matrix is not None:
         print(format_matrix(config.collision_matrix))
     return 0
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import signal
 import sys
 import threading
 
@@ -50,46 +49,83 @@ def parse_positions(items: list[str]) -> dict[str, float]:
 
 
 def run(args: argparse.Namespace) -> int:
+    return show(
+        args.file,
+        positions=parse_positions(args.q),
+        html=args.html,
+        png=args.png,
+        width=args.width,
+        height=args.height,
+        floating=args.floating,
+        port=args.port,
+    )
+
+
+def show(
+    file: str,
+    *,
+    positions: dict[str, float] | None = None,
+    html: str | None = None,
+    png: str | None = None,
+    width: int = 1024,
+    height: int = 768,
+    floating: bool = False,
+    port: int | None = None,
+) -> int:
+    """Draw a robot in Meshcat: write ``html``/``png`` and return, or serve sliders until stopped.
+
+    Args:
+        file: A description path or a name from ``urdf/``.
+        positions: Joint name -> position (rad or m); others keep their default.
+        html: Write a self-contained HTML snapshot here and return.
+        png: Render a PNG here with headless Chromium and return.
+        width, height: PNG size in pixels.
+        floating: Do not weld the root link to the world.
+        port: Meshcat port (default: the first free one from 7000).
+
+    Raises:
+        ModelError: A bad size, port or joint name, or an unreadable description.
+    """
     import tempfile
     from pathlib import Path
 
+    from workbench.cli.signals import stop_event_on_signals
+    from workbench.errors import ModelError
+
+    if width < 1 or height < 1:
+        raise ModelError(f"--width and --height must be positive, got {width} x {height}")
+    if port is not None and not 0 < port < 65536:
+        raise ModelError(f"--port must be in 1..65535, got {port}")
     from workbench.model import load_robot
     from workbench.viz import Viewer
 
-    robot = load_robot(args.file, floating_base=args.floating)
-    q = robot.positions_from(parse_positions(args.q))
-    viewer = Viewer(port=args.port) if args.port else Viewer.instance()
+    robot = load_robot(file, floating_base=floating)
+    q = robot.positions_from(positions or {})
+    viewer = Viewer(port=port) if port else Viewer.instance()
     viewer.show_robot(robot, q)
     viewer.frame_robot(robot, q)
 
-    if args.html or args.png:
-        if args.html:
-            html = viewer.save_html(args.html)
-            print(f"Wrote {html}")
-        if args.png:
+    if html or png:
+        if html:
+            print(f"Wrote {viewer.save_html(html)}")
+        if png:
             with tempfile.TemporaryDirectory(prefix="workbench-show-") as tmp:
-                source = (
-                    Path(args.html) if args.html else viewer.save_html(Path(tmp) / "scene.html")
-                )
-                png = viewer.render_png(source, args.png, args.width, args.height)
-            print(f"Wrote {png}")
+                source = Path(html) if html else viewer.save_html(Path(tmp) / "scene.html")
+                written = viewer.render_png(source, png, width, height)
+            print(f"Wrote {written}")
         return 0
 
     viewer.add_joint_sliders(robot)
     joints = len(robot.joint_names)
-    # Ctrl-C sets a flag instead of raising, so it cannot land inside a Drake call
-    # (or inside the print that tells the user to press it) and turn a clean stop
-    # into an interrupted one.
+    # SIGINT and SIGTERM set a flag instead of raising, so a stop cannot land inside a
+    # Drake call (or inside the print that tells the user to press Ctrl-C).
     stop = threading.Event()
-    previous = signal.signal(signal.SIGINT, lambda *_: stop.set())
-    try:
+    with stop_event_on_signals(stop):
         print(f"{robot.name}: {len(robot.links)} links, {joints} movable joints")
         print(f"Open {viewer.url} in a browser (joint sliders under Open Controls). Ctrl-C stops.")
         sys.stdout.flush()
         while not stop.is_set():
             viewer.poll_sliders()
             stop.wait(0.05)
-    finally:
-        signal.signal(signal.SIGINT, previous)
     print("stopped")
     return 0

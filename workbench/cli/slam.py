@@ -64,46 +64,89 @@ class ProgressBar:
 
 def run(args: argparse.Namespace) -> int:
     """Read the log, run SLAM, write the map files; returns the exit status."""
+    return slam(
+        args.log,
+        out=args.out,
+        resolution=args.resolution,
+        png=args.png,
+        scan_topic=args.scan_topic,
+        odom_topic=args.odom_topic,
+        max_range=args.max_range,
+        quiet=args.quiet,
+    )
+
+
+def slam(
+    log_path: str,
+    *,
+    out: str = "map",
+    resolution: float = 0.05,
+    png: str | None = None,
+    scan_topic: str | None = None,
+    odom_topic: str | None = None,
+    max_range: float = 30.0,
+    quiet: bool = False,
+) -> int:
+    """Run graph SLAM on a laser log and save the map as map_saver does.
+
+    Writes ``OUT.pgm`` + ``OUT.yaml`` (map_server format), a picture (``OUT.png``) and
+    the trajectory (``OUT.csv``: t, x, y, theta in s, m, rad).
+
+    Args:
+        log_path: A CARMEN log (plain or .gz) or a ROS 1 bag with LaserScan and odometry.
+        out: Output path without extension.
+        resolution: Map cell size, m.
+        png: Where to write the picture (default ``OUT.png``).
+        scan_topic, odom_topic: The bag's topics (default: the only one; odometry else /tf).
+        max_range: Readings beyond this are not mapped, m.
+        quiet: No progress bar.
+
+    Raises:
+        MappingError: A bad number, a missing input or output folder, an unreadable log.
+    """
     import numpy as np
 
     from workbench.mapping import SlamConfig, build_map, read_log, run_slam, save_map
     from workbench.mapping.render import save_png
 
-    if not (args.resolution > 0 and np.isfinite(args.resolution)):
+    if not (resolution > 0 and np.isfinite(resolution)):
+        raise MappingError(f"--resolution must be a positive number of metres, got {resolution}")
+    if not (max_range > 0 and np.isfinite(max_range)):
+        raise MappingError(f"--max-range must be a positive number of metres, got {max_range}")
+    target = Path(out)
+    if target.suffix in (".yaml", ".pgm", ".png"):
+        target = target.with_suffix("")
+    if not target.parent.is_dir():
         raise MappingError(
-            f"--resolution must be a positive number of metres, got {args.resolution}"
+            "the output directory does not exist",
+            path=target.parent,
+            hint="create it or change --out",
         )
-    out = Path(args.out)
-    if out.suffix in (".yaml", ".pgm", ".png"):
-        out = out.with_suffix("")
-    if not out.parent.is_dir():
-        raise MappingError(
-            "the output directory does not exist", path=out.parent, hint="create it or change --out"
-        )
+
     started = time.perf_counter()
     cpu_started = time.process_time()
     options = {}
-    if args.scan_topic:
-        options["scan_topic"] = args.scan_topic
-    if args.odom_topic:
-        options["odom_topic"] = args.odom_topic
-    log = read_log(args.log, **options)
+    if scan_topic:
+        options["scan_topic"] = scan_topic
+    if odom_topic:
+        options["odom_topic"] = odom_topic
+    log = read_log(log_path, **options)
     for warning in log.warnings[:10]:
         print(f"warning: {warning}", file=sys.stderr)
     if len(log.warnings) > 10:
         print(f"warning: ... and {len(log.warnings) - 10} more skipped lines", file=sys.stderr)
     scans = log.scans
-    bar = ProgressBar(len(scans), "slam", enabled=not args.quiet)
-    result = run_slam(scans, SlamConfig(resolution=args.resolution), progress=bar)
-    grid = build_map(scans, result.poses, args.resolution, args.max_range).to_map()
-    pgm, yaml_path = save_map(grid, out)
-    png = save_png(
+    bar = ProgressBar(len(scans), "slam", enabled=not quiet)
+    result = run_slam(scans, SlamConfig(resolution=resolution), progress=bar)
+    grid = build_map(scans, result.poses, resolution, max_range).to_map()
+    pgm, yaml_path = save_map(grid, target)
+    picture = save_png(
         grid,
-        Path(args.png) if args.png else out.with_name(out.name + ".png"),
+        Path(png) if png else target.with_name(target.name + ".png"),
         [(result.poses, (220, 30, 30))],
         scale=2 if max(grid.width, grid.height) < 1000 else 1,
     )
-    csv = out.with_name(out.name + ".csv")
+    csv = target.with_name(target.name + ".csv")
     rows = np.column_stack([result.stamps, result.poses])
     try:
         np.savetxt(csv, rows, delimiter=",", header="t,x,y,theta", comments="", fmt="%.6f")
@@ -113,13 +156,13 @@ def run(args: argparse.Namespace) -> int:
     cpu = time.process_time() - cpu_started
     speed = f", {log.duration / wall:.0f}x real time" if log.duration > 0 else ""
     print(
-        f"{len(scans)} scans over {log.duration:.1f} s from {args.log}: "
+        f"{len(scans)} scans over {log.duration:.1f} s from {log_path}: "
         f"{len(result.keyframes)} keyframes, {len(result.loop_closures)} loop closures"
     )
     print(
         f"map {grid.width} x {grid.height} cells at {grid.resolution:.3f} m, "
         f"origin ({grid.origin[0]:.3f}, {grid.origin[1]:.3f}, {grid.origin[2]:.3f})"
     )
-    print(f"wrote {yaml_path}, {pgm}, {png}, {csv}")
+    print(f"wrote {yaml_path}, {pgm}, {picture}, {csv}")
     print(f"took {wall:.1f} s wall, {cpu:.1f} s CPU{speed}")
     return 0

@@ -16,18 +16,45 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from workbench.introspect.definitions import show_service
-    from workbench.msgs import get_service, list_services
-
     if args.verb == "show":
-        print(show_service(args.type))
-    elif args.verb == "md5":
-        print(get_service(args.type)._md5sum)
-    else:
-        names = list_services(args.package)
-        if not names and args.package:
-            from workbench.errors import MessageError
+        return show(args.type)
+    if args.verb == "md5":
+        return md5(args.type)
+    return list_services(args.package)
 
-            raise MessageError(f"no service types in package '{args.package}'")
-        print("\n".join(names))
+
+def show(type_name: str) -> int:
+    """rossrv show: a service's request and response fields.
+
+    Raises:
+        MessageError: An unknown service type.
+    """
+    from workbench.introspect.definitions import show_service
+
+    print(show_service(type_name))
+    return 0
+
+
+def md5(type_name: str) -> int:
+    """rossrv md5: a service's md5sum."""
+    from workbench.msgs import get_service
+
+    print(get_service(type_name)._md5sum)
+    return 0
+
+
+def list_services(package: str | None = None) -> int:
+    """rossrv list: the service types (of one package).
+
+    Raises:
+        MessageError: The package has no service types.
+    """
+    from workbench.msgs import list_services as service_types
+
+    names = service_types(package)
+    if not names and package:
+        from workbench.errors import MessageError
+
+        raise MessageError(f"no service types in package '{package}'")
+    print("\n".join(names))
     return 0

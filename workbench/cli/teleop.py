@@ -18,26 +18,64 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.kind == "turtle":
+        return turtle(
+            topic=args.topic, scale_linear=args.scale_linear, scale_angular=args.scale_angular
+        )
+    return twist(topic=args.topic, speed=args.speed, turn=args.turn)
+
+
+def turtle(
+    *,
+    topic: str = "turtle1/cmd_vel",
+    scale_linear: float | None = None,
+    scale_angular: float | None = None,
+) -> int:
+    """turtle_teleop_key: the arrow keys publish Twists on ``topic`` until q or a stop.
+
+    Args:
+        topic: The Twist topic.
+        scale_linear: m/s per key press (default 2.0).
+        scale_angular: rad/s per key press (default 2.0).
+
+    Raises:
+        TeleopError: No terminal to read keys from.
+    """
+    from workbench.teleop.run import turtle_teleop
+
+    params = {"scale_linear": scale_linear, "scale_angular": scale_angular}
+    return _drive("teleop_turtle", turtle_teleop, topic, params, raw=False)
+
+
+def twist(*, topic: str = "cmd_vel", speed: float | None = None, turn: float | None = None) -> int:
+    """teleop_twist_keyboard: u/i/o j/k/l m/,/. publish Twists on ``topic`` until a stop.
+
+    Args:
+        topic: The Twist topic.
+        speed: Linear speed, m/s (default 0.5).
+        turn: Angular speed, rad/s (default 1.0).
+
+    Raises:
+        TeleopError: No terminal to read keys from.
+    """
+    from workbench.teleop.run import twist_teleop
+
+    return _drive(
+        "teleop_twist_keyboard", twist_teleop, topic, {"speed": speed, "turn": turn}, raw=True
+    )
+
+
+def _drive(name: str, loop, topic: str, params: dict[str, float | None], *, raw: bool) -> int:
     from workbench.bus import Node
-    from workbench.teleop.run import turtle_teleop, twist_teleop
     from workbench.teleop.terminal import RawTerminal
 
-    # fails early, before joining the bus, without a terminal
-    terminal = RawTerminal(raw=args.kind == "twist")
-    if args.kind == "turtle":
-        node = Node("teleop_turtle")
-        for name in ("scale_linear", "scale_angular"):
-            if getattr(args, name) is not None:
-                node.set_param(f"~{name}", getattr(args, name))
-        loop = turtle_teleop
-    else:
-        node = Node("teleop_twist_keyboard")
-        for name in ("speed", "turn"):
-            if getattr(args, name) is not None:
-                node.set_param(f"~{name}", getattr(args, name))
-        loop = twist_teleop
+    terminal = RawTerminal(raw=raw)  # fails early, before joining the bus, without a terminal
+    node = Node(name)
+    for key, value in params.items():
+        if value is not None:
+            node.set_param(f"~{key}", value)
     try:
-        return loop(node, terminal, args.topic)
+        return loop(node, terminal, topic)
     except KeyboardInterrupt:
         return 0
     finally:

@@ -57,12 +57,22 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     if args.verb == "echo":
-        return _echo(args)
+        return echo(
+            args.source, args.target, rate=args.rate, count=args.count, timeout=args.timeout
+        )
     if args.verb == "frames":
-        return _frames(args)
+        out = args.png or args.pdf or args.svg or args.gv or "frames.pdf"
+        return frames(duration=args.duration, out=out, yaml=args.yaml)
     if args.verb == "view":
-        return _view(args)
-    return _static(args)
+        return view(
+            fixed_frame=args.fixed_frame,
+            robot=args.robot,
+            scale=args.scale,
+            rate=args.rate,
+            duration=args.duration,
+            html=args.html,
+        )
+    return static(args.values, once=args.once)
 
 
 def _listener() -> tuple[Any, Any, Any]:
@@ -92,14 +102,37 @@ def format_echo(st: Any) -> str:
     )
 
 
-def _echo(args: argparse.Namespace) -> int:
+def echo(
+    source: str,
+    target: str,
+    *,
+    rate: float = 1.0,
+    count: int | None = None,
+    timeout: float | None = None,
+) -> int:
+    """tf_echo: print the pose of ``target`` in ``source`` ``rate`` times a second.
+
+    Args:
+        source: The reference frame.
+        target: The frame whose pose is printed.
+        rate: Prints per second.
+        count: Return after this many transforms (default: until interrupted).
+        timeout: Raise if no transform arrives within this many seconds.
+
+    Raises:
+        TransformError: A bad rate, count or timeout, or nothing within ``timeout``.
+    """
     from workbench.tf.exceptions import TransformError
 
-    source, target = args.source.lstrip("/"), args.target.lstrip("/")
-    if args.rate <= 0:
-        raise TransformError(f"--rate must be positive, got {args.rate}")
+    source, target = source.lstrip("/"), target.lstrip("/")
+    if not rate > 0:
+        raise TransformError(f"--rate must be positive, got {rate}")
+    if count is not None and count < 1:
+        raise TransformError(f"--count must be at least 1, got {count}")
+    if timeout is not None and not timeout > 0:
+        raise TransformError(f"--timeout must be positive, got {timeout}")
     node, buffer, _ = _listener()
-    period = 1.0 / args.rate
+    period = 1.0 / rate
     started = time.monotonic()
     printed = 0
     last_error = ""
@@ -111,7 +144,7 @@ def _echo(args: argparse.Namespace) -> int:
             if st is not None:
                 print(format_echo(st), flush=True)
                 printed += 1
-                if args.count is not None and printed >= args.count:
+                if count is not None and printed >= count:
                     return 0
             elif why != last_error:
                 print(
@@ -121,13 +154,9 @@ def _echo(args: argparse.Namespace) -> int:
                     flush=True,
                 )
                 last_error = why
-            if (
-                args.timeout is not None
-                and printed == 0
-                and time.monotonic() - started > args.timeout
-            ):
+            if timeout is not None and printed == 0 and time.monotonic() - started > timeout:
                 raise TransformError(
-                    f"no transform from '{source}' to '{target}' within {args.timeout:g} s: {why}",
+                    f"no transform from '{source}' to '{target}' within {timeout:g} s: {why}",
                     hint="is a broadcaster running, joined to the same 'workbench core'?",
                 )
             time.sleep(period)
@@ -136,78 +165,131 @@ def _echo(args: argparse.Namespace) -> int:
     return 0
 
 
-def _frames(args: argparse.Namespace) -> int:
+def frames(*, duration: float = 5.0, out: str = "frames.pdf", yaml: bool = False) -> int:
+    """view_frames: listen for ``duration`` seconds, then draw the frame tree into ``out``.
+
+    Args:
+        duration: Seconds to listen.
+        out: The picture (``.png``, ``.pdf``, ``.svg``) or graphviz source (``.gv``).
+        yaml: Also print the frames as YAML.
+
+    Raises:
+        TransformError: A negative duration, or no tf data arrived.
+    """
+    from workbench.tf.exceptions import TransformError
     from workbench.tf.frames import frames_dot, write_frames
 
+    if not duration >= 0:
+        raise TransformError(f"--duration must not be negative, got {duration}")
     node, buffer, _ = _listener()
     try:
-        print(f"Listening to tf data during {args.duration:g} seconds...", file=sys.stderr)
-        time.sleep(max(args.duration, 0.0))
+        print(f"Listening to tf data during {duration:g} seconds...", file=sys.stderr)
+        time.sleep(duration)
         with buffer._lock:
             info = buffer.frames_info(time.time())
             text = buffer.all_frames_as_yaml(time.time())
     finally:
         node.shutdown()
     if not info:
-        from workbench.tf.exceptions import TransformError
-
         raise TransformError(
-            f"no tf data received in {args.duration:g} s",
+            f"no tf data received in {duration:g} s",
             hint="start the broadcasters first (and 'workbench core' to join their processes)",
         )
-    if args.yaml:
+    if yaml:
         print(text, end="")
-    path = args.png or args.pdf or args.svg or args.gv or "frames.pdf"
-    written = write_frames(frames_dot(info, recorded_at=time.time()), path)
+    written = write_frames(frames_dot(info, recorded_at=time.time()), out)
     print(f"Generating graph in {written} file...", file=sys.stderr)
     return 0
 
 
-def _view(args: argparse.Namespace) -> int:
+def view(
+    *,
+    fixed_frame: str = "world",
+    robot: str | None = None,
+    scale: float = 0.2,
+    rate: float = 10.0,
+    duration: float | None = None,
+    html: str | None = None,
+) -> int:
+    """RViz's TF display: draw every frame as axes in Meshcat until ``duration`` or a stop.
+
+    Args:
+        fixed_frame: The frame everything is drawn in.
+        robot: Also draw this robot (a ``urdf/`` name or path) posed from tf.
+        scale: Axis length, m.
+        rate: Redraws per second.
+        duration: Stop after this many seconds (default: when interrupted).
+        html: Write a snapshot here when stopping, also on Ctrl-C, SIGINT or SIGTERM.
+
+    Raises:
+        TransformError: A bad scale, rate or duration.
+    """
+    from workbench.tf.exceptions import TransformError
+
+    if not scale > 0 or not rate > 0:
+        raise TransformError(f"--scale and --rate must be positive, got {scale}, {rate}")
+    if duration is not None and not duration > 0:
+        raise TransformError(f"--duration must be positive, got {duration}")
     from workbench.viz import Viewer
     from workbench.viz.frames import TfDisplay
 
     node, buffer, _ = _listener()
     viewer = Viewer.instance()
+    interrupted: KeyboardInterrupt | None = None
     try:
         robot_display = None
-        if args.robot:
+        if robot:
             from workbench.model import load_robot
             from workbench.robot_state import RobotModelDisplay
 
-            robot = load_robot(args.robot)
-            robot_display = RobotModelDisplay(robot, buffer, viewer, fixed_frame=args.fixed_frame)
-        display = TfDisplay(buffer, viewer, fixed_frame=args.fixed_frame, scale=args.scale)
-        print(f"tf frames in {args.fixed_frame}: {viewer.url}", flush=True)
+            robot_display = RobotModelDisplay(
+                load_robot(robot), buffer, viewer, fixed_frame=fixed_frame
+            )
+        display = TfDisplay(buffer, viewer, fixed_frame=fixed_frame, scale=scale)
+        print(f"tf frames in {fixed_frame}: {viewer.url}", flush=True)
         started = time.monotonic()
-        while not node.bus.is_shutdown:
-            display.update()
-            if robot_display is not None:
-                robot_display.update()
-            if args.duration is not None and time.monotonic() - started >= args.duration:
-                break
-            time.sleep(1.0 / max(args.rate, 0.1))
+        try:
+            while not node.bus.is_shutdown:
+                display.update()
+                if robot_display is not None:
+                    robot_display.update()
+                if duration is not None and time.monotonic() - started >= duration:
+                    break
+                time.sleep(1.0 / rate)
+        except KeyboardInterrupt as stop:  # also SIGTERM: write the snapshot first
+            interrupted = stop
         with buffer._lock:
-            frames = buffer.get_frame_strings()
-        print(f"{len(frames)} frames: {', '.join(frames) or 'none received'}", flush=True)
-        if args.html:
-            print(f"snapshot: {viewer.save_html(args.html)}", flush=True)
+            names = buffer.get_frame_strings()
+        print(f"{len(names)} frames: {', '.join(names) or 'none received'}", flush=True)
+        if html:
+            print(f"snapshot: {viewer.save_html(html)}", flush=True)
     finally:
         node.shutdown()
+    if interrupted is not None:
+        raise interrupted
     return 0
 
 
-def _static(args: argparse.Namespace) -> int:
+def static(values: list[str], *, once: bool = False) -> int:
+    """static_transform_publisher: latch one transform on ``/tf_static`` until interrupted.
+
+    Args:
+        values: ``x y z yaw pitch roll FRAME CHILD`` or ``x y z qx qy qz qw FRAME CHILD``.
+        once: Publish, then return.
+
+    Raises:
+        TransformError: The values cannot be read.
+    """
     from workbench.introspect.session import cli_node
     from workbench.tf.broadcaster import StaticTransformBroadcaster, make_transform
     from workbench.tf.nodes import parse_static_args
 
-    parent, child, xyz, q = parse_static_args(args.values)
+    parent, child, xyz, q = parse_static_args(values)
     node = cli_node("static_transform_publisher")
     try:
         StaticTransformBroadcaster(node).send_transform(make_transform(parent, child, xyz, q))
         print(f"publishing {parent} -> {child} on /tf_static (latched)", file=sys.stderr)
-        if not args.once:
+        if not once:
             node.bus.spin()
     finally:
         node.shutdown()

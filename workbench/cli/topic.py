@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import sys
 import threading
 import time
+from collections.abc import Iterator
 from typing import Any
 
 PUB_USAGE = "workbench topic pub [-1 | -r RATE | -l] TOPIC TYPE [--] [ARGS ...]"
@@ -32,7 +34,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
     info = verbs.add_parser("info", help="print a topic's type, publishers and subscribers")
     info.add_argument("topic")
     pub = verbs.add_parser(
-        "pub", help="publish a message built from YAML arguments", usage=PUB_USAGE
+        "pub",
+        help="publish a message built from YAML arguments",
+        usage=PUB_USAGE,
+        # rostopic's options may come first (pub -r 10 TOPIC ...), which REMAINDER refuses
+        # when they start with "-": this verb reads every word itself (parse_pub_words).
+        prefix_chars="+",
+        add_help=False,
     )
     pub.add_argument("words", nargs=argparse.REMAINDER, help=argparse.SUPPRESS)
     plot = verbs.add_parser("plot", help="plot numeric fields over time (rqt_plot)")
@@ -42,36 +50,143 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.verb == "list":
+        return topic_list(
+            verbose=args.verbose, publishers_only=args.publishers, subscribers_only=args.subscribers
+        )
+    if args.verb == "type":
+        return topic_type(args.topic)
+    if args.verb == "info":
+        return info(args.topic)
+    if args.verb == "echo":
+        return echo(args.topic, count=args.n, noarr=args.noarr, timeout=args.timeout)
+    if args.verb in ("hz", "bw"):
+        return meter(args.verb, args.topic, window=args.window, duration=args.duration)
+    if args.verb == "plot":
+        return plot(args.fields, seconds=args.seconds, png=args.png)
+    return pub(args.words)
+
+
+@contextlib.contextmanager
+def _cli_node() -> Iterator[Any]:
     from workbench.introspect.session import cli_node
 
-    if args.verb == "pub":
-        options = parse_pub_words(args.words)
     node = cli_node("rostopic")
     try:
-        if args.verb == "list":
-            return _list(node, args)
-        if args.verb in ("type", "info"):
-            return _type_info(node, args)
-        if args.verb == "echo":
-            return _echo(node, args)
-        if args.verb in ("hz", "bw"):
-            return _meter(node, args)
-        if args.verb == "plot":
-            return _plot(node, args)
-        return _pub(node, options)
+        yield node
     finally:
         node.shutdown()
 
 
-def _list(node: Any, args: argparse.Namespace) -> int:
+def _positive(value: float | None, option: str) -> None:
+    from workbench.errors import BusError
+
+    if value is not None and not value > 0:
+        raise BusError(f"{option} must be positive, got {value:g}")
+
+
+def topic_list(
+    *, verbose: bool = False, publishers_only: bool = False, subscribers_only: bool = False
+) -> int:
+    """rostopic list: print the topics in use (with types and counts when ``verbose``)."""
+    with _cli_node() as node:
+        return _list(node, verbose, publishers_only, subscribers_only)
+
+
+def topic_type(topic: str) -> int:
+    """rostopic type: print a topic's type (and the field path of ``topic/field``)."""
+    with _cli_node() as node:
+        return _type_info(node, "type", topic)
+
+
+def info(topic: str) -> int:
+    """rostopic info: print a topic's type, publishers and subscribers."""
+    with _cli_node() as node:
+        return _type_info(node, "info", topic)
+
+
+def echo(
+    topic: str, *, count: int | None = None, noarr: bool = False, timeout: float | None = None
+) -> int:
+    """rostopic echo: print messages (or one field) as YAML until ``count`` or interrupted.
+
+    Args:
+        topic: A topic, or ``topic/field`` such as ``/turtle1/pose/x``.
+        count: Return after this many messages.
+        noarr: Print array lengths instead of their contents.
+        timeout: Raise if ``count`` messages do not arrive within this many seconds.
+
+    Raises:
+        BusError: A bad count or timeout, or nothing within ``timeout``.
+    """
+    from workbench.errors import BusError
+
+    if count is not None and count < 1:
+        raise BusError(f"-n must be at least 1, got {count}")
+    _positive(timeout, "--timeout")
+    with _cli_node() as node:
+        return _echo(node, topic, count, noarr, timeout)
+
+
+def meter(
+    kind: str, topic: str, *, window: int | None = None, duration: float | None = None
+) -> int:
+    """rostopic hz / bw: print a topic's rate (``kind="hz"``) or bandwidth (``"bw"``) each second.
+
+    Args:
+        kind: ``hz`` or ``bw``.
+        topic: The topic.
+        window: Samples in the window.
+        duration: Return after this many seconds (default: when interrupted).
+
+    Raises:
+        BusError: A bad kind, window or duration.
+    """
+    from workbench.errors import BusError
+
+    if kind not in ("hz", "bw"):
+        raise BusError(f"unknown meter '{kind}'", hint="use hz or bw")
+    if window is not None and window < 1:
+        raise BusError(f"--window must be at least 1, got {window}")
+    _positive(duration, "--duration")
+    with _cli_node() as node:
+        return _meter(node, kind, topic, window, duration)
+
+
+def pub(words: list[str]) -> int:
+    """rostopic pub with its command line (``[-1 | -r RATE | -l] TOPIC TYPE [ARGS ...]``).
+
+    Raises:
+        BusError: Missing topic or type, or a bad option.
+    """
+    if words[:1] in (["-h"], ["--help"]):
+        print(f"usage: {PUB_USAGE}\n\n-1 publishes once, -r RATE repeats at RATE Hz, -l latches")
+        return 0
+    options = parse_pub_words(words)
+    with _cli_node() as node:
+        return _pub(node, options)
+
+
+def plot(fields: list[str], *, seconds: float = 10.0, png: str | None = None) -> int:
+    """rqt_plot: record numeric fields for ``seconds``, then draw them (into ``png`` if given).
+
+    Raises:
+        BusError: A bad duration, or a field that names a topic.
+    """
+    _positive(seconds, "--seconds")
+    with _cli_node() as node:
+        return _plot(node, fields, seconds, png)
+
+
+def _list(node: Any, verbose: bool, publishers_only: bool, subscribers_only: bool) -> int:
     from workbench.introspect.graphtext import topic_list
     from workbench.introspect.session import graph
 
     text = topic_list(
         _without(graph(node.bus), node.name),
-        verbose=args.verbose,
-        publishers_only=args.publishers,
-        subscribers_only=args.subscribers,
+        verbose=verbose,
+        publishers_only=publishers_only,
+        subscribers_only=subscribers_only,
     )
     if text:
         print(text)
@@ -90,16 +205,16 @@ def _without(graph: Any, name: str) -> Any:
     return graph
 
 
-def _type_info(node: Any, args: argparse.Namespace) -> int:
+def _type_info(node: Any, verb: str, name: str) -> int:
     from workbench.introspect.echo import split_topic_field
     from workbench.introspect.graphtext import require_topic, topic_info
     from workbench.introspect.session import graph
 
     g = _without(graph(node.bus), node.name)
-    if args.verb == "info":
-        print(topic_info(g, args.topic))
+    if verb == "info":
+        print(topic_info(g, name))
         return 0
-    topic, fields = split_topic_field(_absolute(args.topic), g.topics)
+    topic, fields = split_topic_field(_absolute(name), g.topics)
     record = require_topic(g, topic)
     print(record.type if not fields else f"{record.type} {'/'.join(fields)}")
     return 0
@@ -139,11 +254,11 @@ def _wait_forever(done: threading.Event) -> bool:
     return True
 
 
-def _echo(node: Any, args: argparse.Namespace) -> int:
+def _echo(node: Any, path: str, count: int | None, noarr: bool, timeout: float | None) -> int:
     from workbench.bus import AnyMsg
     from workbench.introspect.echo import format_echo, get_field
 
-    topic, fields = _resolve_topic(node, args.topic)
+    topic, fields = _resolve_topic(node, path)
     done = threading.Event()
     state = {"count": 0, "error": None}
     lock = threading.Lock()
@@ -158,14 +273,14 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
                 state["error"] = error
                 done.set()
                 return
-            print(format_echo(value, noarr=args.noarr), flush=True)
+            print(format_echo(value, noarr=noarr), flush=True)
             state["count"] += 1
-            if args.n is not None and state["count"] >= args.n:
+            if count is not None and state["count"] >= count:
                 done.set()
 
     node.create_subscription(topic, AnyMsg, callback, queue_size=0)
     try:
-        _wait(node, done, args.timeout, topic)
+        _wait(node, done, timeout, topic)
     except KeyboardInterrupt:
         return 0
     if state["error"] is not None:
@@ -173,32 +288,32 @@ def _echo(node: Any, args: argparse.Namespace) -> int:
     return 0
 
 
-def _meter(node: Any, args: argparse.Namespace) -> int:
+def _meter(node: Any, kind: str, path: str, window: int | None, duration: float | None) -> int:
     from workbench.bus import AnyMsg
     from workbench.introspect.rates import BwMeter, HzMeter
 
-    topic, _ = _resolve_topic(node, args.topic)
-    meter: Any = HzMeter(args.window or 50000) if args.verb == "hz" else BwMeter(args.window or 100)
+    topic, _ = _resolve_topic(node, path)
+    rates: Any = HzMeter(window or 50000) if kind == "hz" else BwMeter(window or 100)
     lock = threading.Lock()
 
     def callback(msg: Any) -> None:
         now = time.monotonic()
         with lock:
-            if args.verb == "hz":
-                meter.add(now)
+            if kind == "hz":
+                rates.add(now)
             else:
                 from workbench.msgs import serialize
 
-                meter.add(now, len(serialize(msg)) if not isinstance(msg, bytes) else len(msg))
+                rates.add(now, len(serialize(msg)) if not isinstance(msg, bytes) else len(msg))
 
     node.create_subscription(topic, AnyMsg, callback, queue_size=0)
     print(f"subscribed to [{topic}]", flush=True)
     start = time.monotonic()
     try:
-        while args.duration is None or time.monotonic() - start < args.duration:
-            time.sleep(min(1.0, args.duration or 1.0))
+        while duration is None or time.monotonic() - start < duration:
+            time.sleep(min(1.0, duration or 1.0))
             with lock:
-                text = meter.report()
+                text = rates.report()
             print(text if text else "no new messages", flush=True)
     except KeyboardInterrupt:
         pass
@@ -300,20 +415,20 @@ def _pub(node: Any, options: dict[str, Any]) -> int:
         return 0
 
 
-def _plot(node: Any, args: argparse.Namespace) -> int:
+def _plot(node: Any, fields: list[str], seconds: float, png: str | None) -> int:
     import os
 
     from workbench.bus import AnyMsg
     from workbench.introspect.plot import FieldSeries, plot_series
 
     series: list[FieldSeries] = []
-    for path in args.fields:
-        topic, fields = _resolve_topic(node, path)
-        if not fields:
+    for path in fields:
+        topic, field_path = _resolve_topic(node, path)
+        if not field_path:
             from workbench.errors import BusError
 
             raise BusError(f"{path} names a topic, not a field", hint=f"plot e.g. {path}/x")
-        series.append(FieldSeries(path, topic, fields))
+        series.append(FieldSeries(path, topic, field_path))
     lock = threading.Lock()
     errors: list[Exception] = []
     t0 = time.monotonic()
@@ -334,18 +449,17 @@ def _plot(node: Any, args: argparse.Namespace) -> int:
         by_topic.setdefault(s.topic, []).append(s)
     for topic, items in by_topic.items():
         node.create_subscription(topic, AnyMsg, make_callback(items), queue_size=0)
-    png = args.png
     if png is None and not os.environ.get("DISPLAY"):
         png = "plot.png"
     try:
-        while time.monotonic() - t0 < args.seconds and not errors:
+        while time.monotonic() - t0 < seconds and not errors:
             time.sleep(0.05)
     except KeyboardInterrupt:
         pass
     if errors:
         raise errors[0]
     with lock:
-        out = plot_series(series, png, title=", ".join(args.fields))
+        out = plot_series(series, png, title=", ".join(fields))
     if out is not None:
         print(f"wrote {out}")
     return 0

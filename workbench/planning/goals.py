@@ -121,3 +121,95 @@ def random_valid_state(
     raise GoalError(
         f"no collision-free random state in {attempts} samples", hint="remove obstacles"
     )
+
+
+@dataclass(frozen=True)
+class GroupOutline:
+    """What the cheap goal checks need of a planning group, read without Drake.
+
+    Attributes:
+        group: Group name.
+        joint_names: The group's movable joints, in the description's order.
+        lower, upper: Their position limits (rad or m); infinite where the joint has none.
+        state_names: The group's named states (``home`` ...).
+    """
+
+    group: str
+    joint_names: tuple[str, ...]
+    lower: tuple[float, ...]
+    upper: tuple[float, ...]
+    state_names: tuple[str, ...]
+
+
+def group_outline(config, group: str | None = None) -> GroupOutline | None:
+    """The outline of ``group`` (default: the configuration's) from the URDF and SRDF text.
+
+    Reads the description with lxml only (no Drake), so a bad goal is rejected in a
+    fraction of the time building a planner takes.
+
+    Args:
+        config: A :class:`~workbench.planning.config.PlanningConfig`.
+        group: Planning group name.
+
+    Returns:
+        The outline, or None for a description only Drake reads (SDF).
+
+    Raises:
+        SrdfError: Unknown group, or one naming joints or links the robot lacks.
+        ModelError: The description cannot be read.
+    """
+    from workbench.model.loader import load_document
+
+    if config.robot.suffix == ".sdf":
+        return None
+    document = load_document(config.robot)
+    name = group or config.group
+    names = config.srdf.group_joints(name, document)
+    joints = {joint.name: joint for joint in document.joints}
+    lower = tuple(_limit(joints[n].lower, joints[n].type, -math.inf) for n in names)
+    upper = tuple(_limit(joints[n].upper, joints[n].type, math.inf) for n in names)
+    return GroupOutline(
+        name, tuple(names), lower, upper, tuple(config.srdf.group_state_names(name))
+    )
+
+
+def _limit(value: float | None, joint_type: str, unbounded: float) -> float:
+    # A continuous joint ignores any limits it states (as Drake and MoveIt do).
+    return unbounded if value is None or joint_type == "continuous" else float(value)
+
+
+def check_goal(goal: Goal | str, outline: GroupOutline, what: str = "goal") -> Goal:
+    """Parse ``goal`` and check it against the group before any planner is built.
+
+    Checks the syntax, that a named state exists, and that joint values are one per
+    group joint and within the limits. Random and tip-position goals are checked
+    later, against the collision model and by IK.
+
+    Returns:
+        The parsed goal.
+
+    Raises:
+        GoalError: What is wrong, naming the joints, states or limits.
+    """
+    if isinstance(goal, str):
+        goal = parse_goal(goal)
+    if isinstance(goal, NamedGoal) and goal.name not in outline.state_names:
+        known = ", ".join(outline.state_names) or "none"
+        raise GoalError(
+            f"{what}: group '{outline.group}' has no named state '{goal.name}'",
+            hint=f"known states: {known}; or use random, q=J1,J2,... or xyz=X,Y,Z",
+        )
+    if isinstance(goal, JointGoal):
+        if len(goal.values) != len(outline.joint_names):
+            raise GoalError(
+                f"{what}: group '{outline.group}' has {len(outline.joint_names)} joints "
+                f"({', '.join(outline.joint_names)}), the {what} gives {len(goal.values)} values"
+            )
+        check_limits(
+            list(outline.joint_names),
+            np.array(goal.values, float),
+            np.array(outline.lower, float),
+            np.array(outline.upper, float),
+            what,
+        )
+    return goal

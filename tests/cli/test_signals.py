@@ -1,0 +1,227 @@
+"""Long-running commands stop cleanly on SIGINT and SIGTERM, also as background shell jobs.
+
+A non-interactive shell starts a background job with SIGINT ignored; these tests run
+the commands exactly so (``bash -c 'workbench ... & ... kill -INT %1; wait %1'``) and
+check that each one finalises what it writes and exits with 130 (SIGINT) or 143
+(SIGTERM). Every process group a test starts is killed in ``finally``.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import signal
+import socket
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import pytest
+
+from workbench.cli.signals import Terminated, stop_event_on_signals, stop_on_signals
+from workbench.msgs.std_msgs import String
+
+STATUS = {"INT": 130, "TERM": 143}
+
+#: Start COMMAND in the background, wait (at most 120 s) until READY succeeds, send the
+#: signal to the job, wait for it and print its exit status.
+JOB = """
+{setup}
+"$PY" -m workbench {command} > job.log 2>&1 &
+for _ in $(seq 1200); do {ready} && break; sleep 0.1; done
+{ready} || {{ echo "not ready"; cat job.log; }}
+sleep 0.5
+kill -{signal} %1
+wait %1
+echo "status=$?"
+"""
+
+
+def _free_port() -> int:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return sock.getsockname()[1]
+
+
+def run_job(
+    tmp_path: Path, command: str, ready: str, sig: str, setup: str = "", uri: str = "inproc"
+) -> tuple[int, str]:
+    """Run the job script in ``bash -c``; returns the job's exit status and its output."""
+    script = JOB.format(setup=setup, command=command, ready=ready, signal=sig)
+    env = dict(os.environ, PY=sys.executable, WORKBENCH_MASTER_URI=uri, PYTHONUNBUFFERED="1")
+    env.pop("WORKBENCH_DEBUG", None)
+    shell = subprocess.Popen(
+        ["bash", "-c", script],
+        cwd=tmp_path,
+        env=env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        start_new_session=True,  # its own process group: the finally below ends every child
+    )
+    try:
+        out, _ = shell.communicate(timeout=240)
+    finally:
+        with contextlib.suppress(ProcessLookupError):  # the core and publisher of a setup
+            os.killpg(shell.pid, signal.SIGKILL)
+        shell.wait()
+    log = (
+        (tmp_path / "job.log").read_text(errors="replace")
+        if (tmp_path / "job.log").exists()
+        else ""
+    )
+    assert "status=" in out, out + log
+    return int(out.rsplit("status=", 1)[1].split()[0]), log
+
+
+def _start(tmp_path: Path, uri: str, name: str, *args: str) -> subprocess.Popen:
+    env = dict(os.environ, WORKBENCH_MASTER_URI=uri, PYTHONUNBUFFERED="1")
+    with open(tmp_path / f"{name}.log", "wb") as log:
+        return subprocess.Popen(
+            [sys.executable, "-m", "workbench", *args], env=env, stdout=log, stderr=log
+        )
+
+
+def _wait_for(path: Path, text: str, process: subprocess.Popen) -> None:
+    for _ in range(1200):
+        if text in path.read_text(errors="replace") or process.poll() is not None:
+            break
+        time.sleep(0.1)
+    assert text in path.read_text(errors="replace"), path.read_text(errors="replace")
+
+
+@pytest.mark.multiprocess
+@pytest.mark.parametrize("sig", ["INT", "TERM"])
+def test_bag_record_in_the_background_closes_its_bag(tmp_path, sig):
+    uri = f"tcp/127.0.0.1:{_free_port()}"
+    started: list[subprocess.Popen] = []
+    try:
+        started.append(_start(tmp_path, uri, "core", "core"))
+        _wait_for(tmp_path / "core.log", "started core", started[-1])
+        started.append(
+            _start(
+                tmp_path,
+                uri,
+                "pub",
+                "topic",
+                "pub",
+                "-r",
+                "20",
+                "/chatter",
+                "std_msgs/String",
+                "hi",
+            )
+        )
+        # the issue's script: record in the background, interrupt job %1 once it has started
+        status, log = run_job(
+            tmp_path,
+            "bag record -a -O x.bag",
+            "grep -q 'Subscribing to /chatter' job.log",
+            sig,
+            uri=uri,
+        )
+    finally:
+        for process in reversed(started):
+            process.send_signal(signal.SIGINT)
+            try:
+                process.wait(20)
+            except subprocess.TimeoutExpired:
+                process.kill()
+                process.wait()
+    assert status == STATUS[sig], log
+    assert "Closing" in log and "Traceback" not in log
+    assert (tmp_path / "x.bag").is_file() and not (tmp_path / "x.bag.active").exists()
+    info = subprocess.run(
+        [sys.executable, "-m", "workbench", "bag", "info", "x.bag"],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert info.returncode == 0, info.stderr
+    assert "/chatter" in info.stdout and "std_msgs/String" in info.stdout
+
+
+@pytest.mark.multiprocess
+@pytest.mark.parametrize("sig", ["INT", "TERM"])
+def test_core_stops_from_a_background_job(tmp_path, sig):
+    uri = f"tcp/127.0.0.1:{_free_port()}"
+    status, log = run_job(tmp_path, "core", "grep -q 'started core' job.log", sig, uri=uri)
+    assert status == STATUS[sig], log
+    assert "shutting down core service" in log and "Traceback" not in log
+
+
+@pytest.mark.multiprocess
+@pytest.mark.parametrize("sig", ["INT", "TERM"])
+def test_turtlesim_stops_from_a_background_job_and_writes_its_canvas(tmp_path, sig):
+    status, log = run_job(tmp_path, "turtlesim --png canvas.png", "test -s canvas.png", sig)
+    assert status == STATUS[sig], log
+    assert (tmp_path / "canvas.png").read_bytes()[:4] == b"\x89PNG"
+    assert "Traceback" not in log
+
+
+@pytest.mark.multiprocess
+@pytest.mark.parametrize("sig", ["INT", "TERM"])
+def test_topic_echo_stops_from_a_background_job(tmp_path, sig):
+    status, log = run_job(tmp_path, "topic echo /chatter", "grep -q chatter job.log", sig)
+    assert status == STATUS[sig], log
+    assert "Traceback" not in log
+
+
+@pytest.mark.multiprocess
+@pytest.mark.slow
+def test_tf_view_writes_its_html_snapshot_when_terminated(tmp_path):
+    status, log = run_job(
+        tmp_path, "tf view --html snap.html", "grep -q 'tf frames in' job.log", "TERM"
+    )
+    assert status == STATUS["TERM"], log
+    assert "snapshot:" in log
+    assert "<html" in (tmp_path / "snap.html").read_text(errors="replace").lower()
+
+
+def test_stop_on_signals_raises_even_when_sigint_was_ignored():
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)  # as in a background job
+    try:
+        with stop_on_signals() as stop:
+            with pytest.raises(KeyboardInterrupt) as raised:
+                os.kill(os.getpid(), signal.SIGINT)
+                signal.sigtimedwait([], 0)  # let the handler run
+            assert not isinstance(raised.value, Terminated)
+            assert stop.exit_status == 130
+            os.kill(os.getpid(), signal.SIGINT)  # a second signal does not interrupt finalising
+        assert signal.getsignal(signal.SIGINT) is signal.SIG_IGN  # the caller's handler is back
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
+def test_sigterm_raises_terminated_and_reports_143():
+    previous = signal.getsignal(signal.SIGTERM)
+    with stop_on_signals() as stop:
+        with pytest.raises(Terminated):
+            os.kill(os.getpid(), signal.SIGTERM)
+            signal.sigtimedwait([], 0)
+        assert stop.exit_status == 143
+    assert signal.getsignal(signal.SIGTERM) == previous
+
+
+def test_stop_event_on_signals_sets_the_event_instead_of_raising():
+    event = threading.Event()
+    with stop_on_signals() as stop, stop_event_on_signals(event):
+        os.kill(os.getpid(), signal.SIGTERM)
+        assert event.wait(5)
+    assert stop.exit_status == 143
+
+
+@pytest.mark.multiprocess
+@pytest.mark.parametrize("sig", ["INT", "TERM"])
+def test_bag_play_in_a_loop_stops_from_a_background_job(tmp_path, sig):
+    from workbench.bag import BagWriter
+
+    with BagWriter(tmp_path / "in.bag") as bag:
+        for i in range(20):
+            bag.write("/chatter", String(data=f"m{i}"), 100.0 + 0.1 * i)
+    status, log = run_job(tmp_path, "bag play -l in.bag", "grep -q 'Opening' job.log", sig)
+    assert status == STATUS[sig], log
+    assert "Traceback" not in log
