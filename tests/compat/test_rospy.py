@@ -170,3 +170,49 @@ def test_rospy_state_lives_in_one_context(monkeypatch):
     assert bus.spin_until(lambda: got, 1.0) and got == [String(data="bound")]
     rospy.signal_shutdown("test over")
     assert ctx.shutdown.is_set() and rospy.is_shutdown() and bus.is_shutdown
+
+
+@pytest.mark.multiprocess
+@pytest.mark.parametrize("sig", ["INT", "TERM"])
+def test_a_stop_signal_runs_the_shutdown_hooks_of_a_script_under_workbench_run(tmp_path, sig):
+    # rospy's own handler (rospy/core.py, _ros_signal) calls signal_shutdown -- which runs the
+    # on_shutdown hooks and wakes rospy.sleep with ROSInterruptException -- then chains to the
+    # handler installed before it; workbench run's handler then sets the exit status.
+    script = tmp_path / "hooked.py"
+    script.write_text(
+        textwrap.dedent(
+            """
+            from workbench.compat import rospy
+            rospy.init_node("hooked")
+            rospy.on_shutdown(lambda: print("hook ran", flush=True))
+            print("ready", flush=True)
+            try:
+                while not rospy.is_shutdown():
+                    rospy.sleep(0.05)
+            except rospy.ROSInterruptException:
+                print("interrupted", flush=True)
+            print("loop over", flush=True)
+            """
+        )
+    )
+    workbench = Path(sys.executable).with_name("workbench")
+    env = dict(os.environ, WORKBENCH_MASTER_URI="inproc", PYTHONUNBUFFERED="1")
+    # a background job of a non-interactive shell: SIGINT starts out ignored
+    result = subprocess.run(
+        [
+            "bash",
+            "-c",
+            f'"{workbench}" run pkg "{script}" > "{tmp_path}/out" 2>&1 &\n'
+            f'for i in $(seq 600); do grep -q ready "{tmp_path}/out" 2>/dev/null && break; '
+            "sleep 0.1; done\n"
+            f"kill -{sig} %1; wait %1",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env=env,
+    )
+    out = (tmp_path / "out").read_text()
+    assert result.returncode == (130 if sig == "INT" else 143), out
+    assert "hook ran" in out and "loop over" in out, out
+    assert "Traceback" not in out, out

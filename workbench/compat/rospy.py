@@ -16,6 +16,8 @@ process's nodes, shutdown state and hooks), made on first use.
 
 from __future__ import annotations
 
+import contextlib
+import functools
 import signal
 import sys
 import threading
@@ -256,14 +258,19 @@ def init_node(
     node.on_shutdown(lambda *reason: signal_shutdown(reason[0] if reason else "shutdown"))
     ctx.adopt(node)
     if not disable_signals and threading.current_thread() is threading.main_thread():
-        if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
-            signal.signal(signal.SIGINT, _on_sigint)
-        if signal.getsignal(signal.SIGTERM) is signal.SIG_DFL:
-            signal.signal(signal.SIGTERM, _on_sigint)
+        for signum in (signal.SIGINT, signal.SIGTERM):
+            signal.signal(signum, functools.partial(_on_signal, signal.getsignal(signum)))
 
 
-def _on_sigint(signum: int, frame: Any) -> None:
+def _on_signal(previous: Any, signum: int, frame: Any) -> None:
+    # As rospy: shut down (running the on_shutdown hooks), then chain to the handler that
+    # was installed before, but filter its KeyboardInterrupt, so the script ends through
+    # is_shutdown() / ROSInterruptException rather than a KeyboardInterrupt mid-statement.
+    # Installed even where the signal was ignored (a background job's SIGINT), as rospy does.
     signal_shutdown("keyboard interrupt" if signum == signal.SIGINT else "terminated")
+    if callable(previous):
+        with contextlib.suppress(KeyboardInterrupt):
+            previous(signum, frame)
 
 
 def get_caller_id() -> str:
