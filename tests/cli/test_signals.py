@@ -171,6 +171,41 @@ def test_topic_echo_stops_from_a_background_job(tmp_path, sig):
 
 
 @pytest.mark.multiprocess
+@pytest.mark.parametrize("sig", ["INT", "TERM"])
+def test_launch_stops_its_nodes_from_a_background_job(tmp_path, sig):
+    (tmp_path / "talk.launch").write_text(
+        '<launch><node pkg="beginner_tutorials" type="talker.py" name="talker"/></launch>'
+    )
+    uri = f"tcp/127.0.0.1:{_free_port()}"
+    status, log = run_job(
+        tmp_path, "launch talk.launch", "grep -q 'started with pid' job.log", sig, uri=uri
+    )
+    assert status == STATUS[sig], log
+    pids = [int(line.split("[")[-1].split("]")[0]) for line in log.splitlines() if "pid [" in line]
+    assert pids, log
+    for pid in pids:  # the launcher stopped its node before it exited
+        assert not Path(f"/proc/{pid}").exists() or "Z" in _proc_state(pid), log
+    assert "Traceback" not in log
+
+
+def _proc_state(pid: int) -> str:
+    try:
+        return Path(f"/proc/{pid}/stat").read_text().split(")")[-1].split()[0]
+    except OSError:
+        return "gone"
+
+
+@pytest.mark.multiprocess
+@pytest.mark.parametrize("sig", ["INT", "TERM"])
+def test_run_of_a_lab_script_stops_from_a_background_job(tmp_path, sig):
+    status, log = run_job(
+        tmp_path, "run beginner_tutorials talker.py", "grep -q 'hello world' job.log", sig
+    )
+    assert status == STATUS[sig], log
+    assert "Traceback" not in log
+
+
+@pytest.mark.multiprocess
 @pytest.mark.slow
 def test_tf_view_writes_its_html_snapshot_when_terminated(tmp_path):
     status, log = run_job(
