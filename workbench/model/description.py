@@ -29,7 +29,7 @@ from workbench.errors import ModelError
 from workbench.model.meshes import prepare_mesh
 from workbench.model.packages import PackageResolver
 from workbench.model.sources import read_description, resolve_robot_path
-from workbench.model.tree import build_tree
+from workbench.model.tree import checked_tree
 from workbench.model.urdf_xml import UrdfDocument, parse_urdf_text
 
 if TYPE_CHECKING:
@@ -244,16 +244,7 @@ def _fill_forward_materials(root: Any) -> None:
 
 
 def _checked_root(document: UrdfDocument) -> str:
-    tree = build_tree(document)
-    if tree.problems:
-        first = tree.problems[0]
-        raise ModelError(
-            f"{first.element}: {first.message}",
-            path=document.path,
-            line=first.line,
-            hint=first.hint or None,
-        )
-    assert tree.root is not None
+    root, _ = checked_tree(document)
     for joint in document.joints:
         # Drake aborts the whole process on reversed limits, so they never reach it.
         if joint.lower is not None and joint.upper is not None and joint.lower > joint.upper:
@@ -264,4 +255,4 @@ def _checked_root(document: UrdfDocument) -> str:
                 line=joint.line,
                 hint="swap them",
             )
-    return tree.root
+    return root

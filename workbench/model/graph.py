@@ -14,7 +14,7 @@ from pathlib import Path
 import pydot
 
 from workbench.errors import ModelError
-from workbench.model.tree import KinematicTree, build_tree
+from workbench.model.tree import KinematicTree, checked_tree
 from workbench.model.urdf_xml import UrdfDocument
 from workbench.optional import require_program
 
@@ -53,22 +53,9 @@ def _ordered_children(tree: KinematicTree) -> dict:
     return {link: sorted(joints, key=lambda j: j.name) for link, joints in tree.children.items()}
 
 
-def _tree(document: UrdfDocument) -> tuple[str, KinematicTree]:
-    tree = build_tree(document)
-    if tree.problems or tree.root is None:
-        first = tree.problems[0]
-        raise ModelError(
-            f"{first.element}: {first.message}",
-            path=document.path,
-            line=first.line,
-            hint=first.hint or None,
-        )
-    return tree.root, tree
-
-
 def graph_source(document: UrdfDocument) -> str:
     """The ``.gv`` text of ``document`` (children ordered by joint name, as urdfdom does)."""
-    root, tree = _tree(document)
+    root, tree = checked_tree(document)
     children = _ordered_children(tree)
     lines = ["digraph G {", "node [shape=box];"]
 
@@ -94,7 +81,7 @@ def graph_source(document: UrdfDocument) -> str:
 
 def robot_graph(document: UrdfDocument) -> RobotGraph:
     """A :class:`RobotGraph` (pydot) of ``document``."""
-    root, tree = _tree(document)
+    root, tree = checked_tree(document)
     children = _ordered_children(tree)
     graph = RobotGraph("G", graph_type="digraph")
     graph.source = graph_source(document)

@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections import Counter
 from dataclasses import dataclass, field
 
+from workbench.errors import ModelError
 from workbench.model.findings import Finding
 from workbench.model.info import JointInfo
 from workbench.model.urdf_xml import UrdfDocument
@@ -162,3 +163,21 @@ def build_tree(document: UrdfDocument) -> KinematicTree:
             )
         )
     return tree
+
+
+def checked_tree(document: UrdfDocument) -> tuple[str, KinematicTree]:
+    """The root link and tree of ``document``, which must form one tree.
+
+    Raises:
+        ModelError: The first problem ``build_tree`` found, with its file and line.
+    """
+    tree = build_tree(document)
+    if tree.problems or tree.root is None:
+        first = tree.problems[0]
+        raise ModelError(
+            f"{first.element}: {first.message}",
+            path=document.path,
+            line=first.line,
+            hint=first.hint or None,
+        )
+    return tree.root, tree
