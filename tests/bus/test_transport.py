@@ -254,3 +254,38 @@ def test_the_raw_pump_restarts_after_a_failure_and_stops_when_closed(core_uri, c
         )
         transport._pump(Channel([RuntimeError("again")] * 10), "/raw")
         assert "it stops: raw subscribers of /raw" in capfd.readouterr().err
+
+
+def test_flush_does_not_warn_about_a_subscriber_whose_session_has_closed(core_uri, capfd):
+    # The subscriber left (its liveliness token not yet withdrawn here): its barrier query
+    # ends at once unanswered, and there is nothing queued for it that could be lost.
+    from workbench.bus import keys
+
+    with Bus.connect(core_uri) as bus:
+        talker = Node("talker", bus=bus, disable_rosout=True)
+        pub = talker.create_publisher("/chatter", String)
+        transport = bus.remote
+        gone = keys.endpoint_token(
+            "f00dfeedf00dfeedf00dfeedf00dfeed", 1, "sub", "/gone", "/chatter", pub.type, pub.md5
+        )
+        transport._remote[gone] = keys.parse_token(gone)
+        pub.publish("hello")
+        started = time.monotonic()
+        assert transport.flush(timeout=5.0)
+        assert time.monotonic() - started < 4.0  # it did not sit out the timeout
+        assert "did not confirm receipt" not in capfd.readouterr().err
+
+
+def test_flush_warns_when_a_subscriber_does_not_confirm_in_time(core_uri, capfd):
+    with Bus.connect(core_uri) as one, Bus.connect(core_uri) as two:
+        talker = Node("talker", bus=one, disable_rosout=True)
+        pub = talker.create_publisher("/chatter", String)
+        listener = Node("listener", bus=two, disable_rosout=True)
+        # an inline callback runs on the receive thread, so the barrier waits behind it
+        listener.create_subscription("/chatter", String, lambda msg: time.sleep(3), inline=True)
+        deadline = time.monotonic() + 20
+        while pub.get_num_connections() < 1 and time.monotonic() < deadline:
+            time.sleep(0.05)
+        pub.publish("hello")
+        assert not one.remote.flush(timeout=1.0)
+        assert "did not confirm receipt" in capfd.readouterr().err
