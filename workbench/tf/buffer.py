@@ -20,6 +20,7 @@ from typing import Any
 
 import numpy as np
 
+from workbench.spatial import matrix_from_quaternion
 from workbench.tf.core import DEFAULT_AUTHORITY, DEFAULT_CACHE_TIME, BufferCore, StampedTransform
 from workbench.tf.exceptions import (
     ConnectivityException,
@@ -375,9 +376,8 @@ def from_msg(msg: Any) -> tuple[tuple[float, float, float], tuple[float, float, 
 
 def apply_to_points(translation: Any, rotation: Any, points: np.ndarray) -> np.ndarray:
     """Apply a transform to an ``(N, 3)`` (or ``(3,)``) array of points."""
-    from scipy.spatial.transform import Rotation
-
-    return Rotation.from_quat(rotation).apply(points) + np.asarray(translation, dtype=float)
+    rotated = np.asarray(points, dtype=float) @ matrix_from_quaternion(rotation).T
+    return rotated + np.asarray(translation, dtype=float)
 
 
 def _rotate(q: tuple[float, ...], v: tuple[float, float, float]) -> tuple[float, float, float]:
