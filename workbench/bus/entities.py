@@ -145,7 +145,7 @@ class Publisher:
             raise ShutdownError(f"publisher on {self.topic} is closed (its node shut down)")
         if self._has_header:  # rospy numbers the messages of a publisher
             self._seq += 1
-            msg.header.seq = self._seq & 0xFFFFFFFF
+            msg.header.seq = self._seq & 0xFFFFFFFF  # type: ignore[attr-defined]
         if self.latch:
             self.last_message = msg
         for send in self._senders:  # one per transport (in-process first)

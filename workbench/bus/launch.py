@@ -391,9 +391,9 @@ def _xml_rosparam(element: Any, ctx: _Context, plan: LaunchPlan, namespace: str)
         raise LaunchError(
             f"<rosparam> YAML is invalid: {error}", path=ctx.path, line=element.sourceline
         ) from None
-    param = _attr(element, "param", ctx)
-    if param is not None:
-        plan.params[_param_name(param, base)] = data
+    target_param = _attr(element, "param", ctx)
+    if target_param is not None:
+        plan.params[_param_name(target_param, base)] = data
     elif isinstance(data, dict):
         for key, value in data.items():
             plan.params[_param_name(str(key), base)] = value

@@ -18,10 +18,15 @@ import tempfile
 import time
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from workbench.bus.launch import LaunchPlan, NodeSpec, find_package
 from workbench.entry_points import call_node, find_node, unknown_node
 from workbench.errors import BusError
+
+if TYPE_CHECKING:
+    from workbench.bus.bus import Bus
+    from workbench.bus.core import Core
 
 
 def find_script(pkg: str, node_type: str, near: Path | None = None) -> Path | None:
@@ -130,8 +135,8 @@ class Launcher:
         self.uri = uri or master_uri()
         self.near = near
         self.log_dir = log_dir or Path(tempfile.mkdtemp(prefix="workbench-launch-"))
-        self.core = None
-        self.bus = None
+        self.core: Core | None = None
+        self.bus: Bus | None = None
         self.processes = [_Process(spec, i + 1) for i, spec in enumerate(plan.nodes)]
         self._stopping = False
 
@@ -147,12 +152,12 @@ class Launcher:
         else:
             self.core = Core(self.uri)
             print(f"started core service [{self.uri}]", flush=True)
-        self.bus = Bus.connect(self.uri)
+        self.bus = bus = Bus.connect(self.uri)
         for name in self.plan.deletes:
-            if self.bus.params.has(name):
-                self.bus.params.delete(name)
+            if bus.params.has(name):
+                bus.params.delete(name)
         for name, value in self.plan.params.items():
-            self.bus.params.set(name, value)
+            bus.params.set(name, value)
         if self.plan.params:
             print("PARAMETERS", flush=True)
             for name in sorted(self.plan.params):

@@ -119,6 +119,7 @@ def _load_findings(
     from workbench.model.loader import load_robot
 
     source = document.path
+    assert source is not None  # check_document loads only documents read from a file
     logger = logging.getLogger("workbench.model")
     disabled, logger.disabled = logger.disabled, True
     try:

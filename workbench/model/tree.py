@@ -133,7 +133,7 @@ def build_tree(document: UrdfDocument) -> KinematicTree:
             tree.children.setdefault(joint.parent, []).append(joint)
     tree.roots = [name for name in dict.fromkeys(link_names) if name not in tree.parent_joint]
     if len(tree.roots) > 1:
-        lines = {link.name: link.line for link in document.links}
+        root_lines = {link.name: link.line for link in document.links}
         problems.append(
             Finding(
                 "error",
@@ -142,7 +142,7 @@ def build_tree(document: UrdfDocument) -> KinematicTree:
                 f"has {len(tree.roots)} root links ({', '.join(tree.roots)}); "
                 "every link but one must be a joint's child",
                 "connect the extra roots with joints",
-                lines.get(tree.roots[1]),
+                root_lines.get(tree.roots[1]),
             )
         )
     reached = set()
@@ -151,7 +151,7 @@ def build_tree(document: UrdfDocument) -> KinematicTree:
         reached.update(tree.subtree(start))
     cyclic = [name for name in dict.fromkeys(link_names) if name not in reached]
     if cyclic:
-        joint = tree.parent_joint.get(cyclic[0])
+        loop_joint = tree.parent_joint.get(cyclic[0])
         problems.append(
             Finding(
                 "error",
@@ -159,7 +159,7 @@ def build_tree(document: UrdfDocument) -> KinematicTree:
                 f"link '{cyclic[0]}'",
                 f"links {', '.join(cyclic)} form a closed loop with no root",
                 "URDF describes trees; break the loop by removing a joint",
-                joint.line if joint else None,
+                loop_joint.line if loop_joint else None,
             )
         )
     return tree
