@@ -17,8 +17,9 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from io import BytesIO
 from pathlib import Path
-from typing import Any, BinaryIO, NamedTuple
+from typing import Any, BinaryIO, NamedTuple, cast
 
+from rosbags.interfaces import ConnectionExtRosbag1
 from rosbags.rosbag1 import Reader as _RosbagsReader
 from rosbags.rosbag1.reader import (
     Header,
@@ -172,6 +173,11 @@ def summarize(path: str | os.PathLike[str]) -> BagSummary:
     return _scan(path, want_messages=False)[0]
 
 
+def _ros1_ext(connection: Any) -> ConnectionExtRosbag1:
+    """The ROS 1 part of a rosbags connection (a .bag file's connections all have one)."""
+    return cast(ConnectionExtRosbag1, connection.ext)
+
+
 def _summarize_indexed(path: Path) -> BagSummary:
     reader = _RosbagsReader(path)
     reader.open()
@@ -183,8 +189,8 @@ def _summarize_indexed(path: Path) -> BagSummary:
                 denormalize_msgtype(c.msgtype),
                 c.digest,
                 c.msgdef.data,
-                c.ext.callerid,
-                bool(c.ext.latching),
+                _ros1_ext(c).callerid,
+                bool(_ros1_ext(c).latching),
             )
             for c in reader.connections
         }
@@ -361,9 +367,9 @@ def iter_raw(
         return
     _, messages = _scan(path, want_messages=True)
     messages.sort(key=lambda m: m[1])
-    for conn, stamp, data in messages:
-        if wanted is None or conn.topic in wanted:
-            yield conn, stamp, data
+    for stored, stamp, data in messages:
+        if wanted is None or stored.topic in wanted:
+            yield stored, stamp, data
 
 
 def read_messages(

@@ -185,7 +185,8 @@ def play(
         clock_pub = node.create_publisher("/clock", get_type("rosgraph_msgs/Clock"), queue_size=10)
     print(f"[ INFO] [{time.time():.9f}]: Opening {bag}", flush=True)
     print(f"\nWaiting {delay:g} seconds after advertising topics...", end="", flush=True)
-    total = (summary.end_ns - summary.start_ns) / 1e9 if summary.start_ns is not None else 0.0
+    start_ns, end_ns = summary.start_ns, summary.end_ns
+    total = (end_ns - start_ns) / 1e9 if start_ns is not None and end_ns is not None else 0.0
     quiet = quiet or not sys.stdout.isatty()
     state = {"delay_done": False}
 
@@ -199,7 +200,8 @@ def play(
     def publish_clock(ns: int) -> None:
         from workbench.msgs import Time
 
-        clock_pub.publish(get_type("rosgraph_msgs/Clock")(clock=Time(ns // 10**9, ns % 10**9)))
+        if clock_pub is not None:
+            clock_pub.publish(get_type("rosgraph_msgs/Clock")(clock=Time(ns // 10**9, ns % 10**9)))
 
     def progress(bag_time: float, elapsed: float) -> None:
         if not quiet:

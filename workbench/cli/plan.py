@@ -247,4 +247,4 @@ def _load_or_setup(robot: str, config_dir: str | None):
             target = default_dir(robot)
     print(f"no planning configuration for '{robot}': running setup first (writing {target}/)")
     run_setup(robot, out_dir=target)
-    return load_config(target)
+    return load_config(target if target is not None else robot)

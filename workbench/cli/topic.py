@@ -260,7 +260,7 @@ def _echo(node: Any, path: str, count: int | None, noarr: bool, timeout: float |
 
     topic, fields = _resolve_topic(node, path)
     done = threading.Event()
-    state = {"count": 0, "error": None}
+    state: dict[str, Any] = {"count": 0, "error": None}
     lock = threading.Lock()
 
     def callback(msg: Any) -> None:

@@ -108,7 +108,7 @@ class ServiceException(ROSException):
 # --- time -------------------------------------------------------------------------------
 
 
-class Time(_MsgTime):  # type: ignore[misc, valid-type]
+class Time(_MsgTime):
     """``rospy.Time``: ``Time(secs, nsecs)``, ``Time.now()``, ``to_sec()``."""
 
     __slots__ = ()
@@ -119,7 +119,7 @@ class Time(_MsgTime):  # type: ignore[misc, valid-type]
         return cls(0, _bus().clock.now_ns())
 
 
-class Duration(_MsgDuration):  # type: ignore[misc, valid-type]
+class Duration(_MsgDuration):
     """``rospy.Duration``."""
 
     __slots__ = ()

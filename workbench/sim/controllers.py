@@ -159,9 +159,15 @@ def add_controller(
 
     n = control_plant.num_positions()
     kp, ki, kd = gains_vectors(gains, n)
+    controller: InverseDynamicsController | PidController
     if kind == "inverse_dynamics":
+        # pydrake's stubs give numpy arrays a float64 shape; any float array is right here
         controller = InverseDynamicsController(
-            control_plant, kp, ki, kd, has_reference_acceleration=True
+            control_plant,
+            kp,  # type: ignore[arg-type]
+            ki,  # type: ignore[arg-type]
+            kd,  # type: ignore[arg-type]
+            has_reference_acceleration=True,
         )
     elif kind == "pid":
         context = control_plant.CreateDefaultContext()

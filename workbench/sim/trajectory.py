@@ -65,6 +65,7 @@ def as_joint_trajectory(value: Any, joint_names: list[str] | None = None) -> Joi
         SimulationError: Missing fields, wrong shapes, non-finite values or
             times that do not increase.
     """
+    raw: Any
     if isinstance(value, JointTrajectory) and joint_names is None:
         raw = value
         get = getattr

@@ -39,7 +39,15 @@ from workbench.sim.controllers import (
     make_command_system,
 )
 from workbench.sim.trajectory import TrackingReport, as_joint_trajectory
-from workbench.spatial import Mesh, Shape, SpatialError, as_rigid_transform, drake_shape, make_shape
+from workbench.spatial import (
+    Mesh,
+    Shape,
+    SpatialError,
+    as_rigid_transform,
+    drake_shape,
+    make_shape,
+    rigid_transform,
+)
 
 GROUND_NAME = "ground"
 
@@ -253,7 +261,8 @@ class World:
                     controller.get_input_port_desired_acceleration(),
                 )
             effort = np.array([_effort_limit(robot, j.name()) for j in joints])
-            saturation = self.builder.AddSystem(Saturation(-effort, effort))
+            # pydrake's stubs give numpy arrays a float64 shape; any float array is right here
+            saturation = self.builder.AddSystem(Saturation(-effort, effort))  # type: ignore[arg-type]
             self.builder.Connect(controller_output(controller), saturation.get_input_port(0))
             selector = np.zeros((plant.num_velocities(), n))
             for col, joint in enumerate(joints):
@@ -313,20 +322,20 @@ class World:
         self._require_built("set_positions")
         entry = self._entry(robot_name)
         instance = entry.robot.model_instance
-        q = np.asarray(q, dtype=float).reshape(-1)
+        positions = np.asarray(q, dtype=float).reshape(-1)
         expected = self.plant.num_positions(instance)
-        if q.shape != (expected,):
+        if positions.shape != (expected,):
             raise SimulationError(
-                f"robot '{robot_name}' takes {expected} positions, got {q.size}",
+                f"robot '{robot_name}' takes {expected} positions, got {positions.size}",
                 hint="joints: " + ", ".join(entry.joint_names or []),
             )
         plant_context = self.plant.GetMyMutableContextFromRoot(self.context)
-        self.plant.SetPositions(plant_context, instance, q)
+        self.plant.SetPositions(plant_context, instance, positions)
         self.plant.SetVelocities(
             plant_context, instance, np.zeros(self.plant.num_velocities(instance))
         )
-        if entry.command is not None and len(q) == len(entry.joint_names or []):
-            self._set_command(entry, Command(q.copy()))
+        if entry.command is not None and len(positions) == len(entry.joint_names or []):
+            self._set_command(entry, Command(positions.copy()))
         if entry.controller is not None:
             ctrl_context = entry.controller.GetMyMutableContextFromRoot(self.context)
             if ctrl_context.num_continuous_states():
@@ -500,17 +509,16 @@ class World:
         # A thick box rather than a HalfSpace: same contact, and Drake's
         # deformable-contact warning about half spaces stays quiet.
         from pydrake.geometry import Box
-        from pydrake.math import RigidTransform
         from pydrake.multibody.plant import CoulombFriction
 
         world = self.plant.world_body()
-        X_WG = RigidTransform([0.0, 0.0, z - 0.5])
+        X_WG = rigid_transform([0.0, 0.0, z - 0.5])
         self.plant.RegisterCollisionGeometry(
             world, X_WG, Box(20.0, 20.0, 1.0), GROUND_NAME, CoulombFriction(0.8, 0.6)
         )
         self.plant.RegisterVisualGeometry(
             world,
-            RigidTransform([0.0, 0.0, z - 0.005]),
+            rigid_transform([0.0, 0.0, z - 0.005]),
             Box(4.0, 4.0, 0.01),
             GROUND_NAME,
             np.array([0.85, 0.85, 0.85, 1.0]),

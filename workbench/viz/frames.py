@@ -24,16 +24,15 @@ def rigid_transform(translation: Any, rotation: Any) -> Any:
 def add_triad(meshcat: Any, path: str, length: float = 0.2, radius: float = 0.006) -> None:
     """Draw a triad (x red, y green, z blue) under ``path``; its origin is the frame origin."""
     from pydrake.geometry import Cylinder, Rgba
-    from pydrake.math import RigidTransform, RollPitchYaw
 
     axes = {
-        "x": (RollPitchYaw(0, np.pi / 2, 0), [length / 2, 0, 0], Rgba(0.9, 0.1, 0.1, 1)),
-        "y": (RollPitchYaw(np.pi / 2, 0, 0), [0, length / 2, 0], Rgba(0.1, 0.8, 0.1, 1)),
-        "z": (RollPitchYaw(0, 0, 0), [0, 0, length / 2], Rgba(0.1, 0.2, 0.9, 1)),
+        "x": ((0, np.pi / 2, 0), [length / 2, 0, 0], Rgba(0.9, 0.1, 0.1, 1)),
+        "y": ((np.pi / 2, 0, 0), [0, length / 2, 0], Rgba(0.1, 0.8, 0.1, 1)),
+        "z": ((0, 0, 0), [0, 0, length / 2], Rgba(0.1, 0.2, 0.9, 1)),
     }
     for name, (rpy, offset, colour) in axes.items():
         meshcat.SetObject(f"{path}/{name}-axis", Cylinder(radius, length), colour)
-        meshcat.SetTransform(f"{path}/{name}-axis", RigidTransform(rpy, offset))
+        meshcat.SetTransform(f"{path}/{name}-axis", spatial.rigid_transform(offset, rpy=rpy))
 
 
 class TfDisplay:

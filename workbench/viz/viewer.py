@@ -66,7 +66,9 @@ class Viewer:
 
     # --- robots --------------------------------------------------------------
 
-    def show_robot(self, robot, q: Sequence[float] | None = None, prefix: str | None = None) -> str:
+    def show_robot(
+        self, robot, q: Sequence[float] | np.ndarray | None = None, prefix: str | None = None
+    ) -> str:
         """Draw ``robot`` (visual geometry in its colours) at positions ``q``.
 
         Args:
@@ -117,7 +119,9 @@ class Viewer:
             )
         return entry
 
-    def set_positions(self, robot, q: Sequence[float], prefix: str | None = None) -> None:
+    def set_positions(
+        self, robot, q: Sequence[float] | np.ndarray, prefix: str | None = None
+    ) -> None:
         """Move a shown robot's links to positions ``q`` (movable joints, rad or m)."""
         entry = self._entry(robot, prefix)
         poses = robot.forward_kinematics(q)
@@ -125,7 +129,7 @@ class Viewer:
         for link, X_WL in poses.items():
             self.meshcat.SetTransform(f"{entry.prefix}/{link}", X_WL)
 
-    def robot_points(self, robot, q: Sequence[float] | None = None) -> np.ndarray:
+    def robot_points(self, robot, q: Sequence[float] | np.ndarray | None = None) -> np.ndarray:
         """Corners of every visual's bounding box in the world at ``q``, shape (N, 3), metres."""
         poses = robot.forward_kinematics(robot.default_positions() if q is None else q)
         points = [np.zeros(3)]
@@ -134,7 +138,7 @@ class Viewer:
             points.extend(X_WG.multiply(shape_corners(visual.shape).T).T)
         return np.array(points)
 
-    def frame_robot(self, robot, q: Sequence[float] | None = None) -> None:
+    def frame_robot(self, robot, q: Sequence[float] | np.ndarray | None = None) -> None:
         """Place the camera so that the whole robot at ``q`` is in view."""
         self.frame_camera(self.robot_points(robot, q))
 
