@@ -48,7 +48,7 @@ def message_from_args(typename: str | type, args: Sequence[str], *, what: str = 
     """
     from workbench.msgs import from_dict, get_type
 
-    cls = get_type(typename) if isinstance(typename, str) else typename
+    cls: Any = get_type(typename) if isinstance(typename, str) else typename
     values = parse_yaml_args(args)
     if not values:
         data: Any = {}
@@ -70,7 +70,7 @@ def message_from_args(typename: str | type, args: Sequence[str], *, what: str = 
         ) from None
 
 
-def _fix_service_words(cls: type, data: Any) -> Any:
+def _fix_service_words(cls: Any, data: Any) -> Any:
     """YAML 1.1 reads ``on``/``off``/``yes``/``no`` as booleans; a uint8 field wants 1/0.
 
     ``rosservice call /turtle1/set_pen 255 0 255 3 on`` relies on this: ``off`` is uint8.

@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 import select
 import sys
-from typing import TextIO
+from typing import Any, TextIO
 
 from workbench.errors import WorkbenchError
 
@@ -35,7 +35,7 @@ class RawTerminal:
                 "keyboard teleop needs a terminal, but standard input is not one",
                 hint="run it in a terminal window, not through a pipe",
             )
-        self._saved = None
+        self._saved: list[Any] | None = None
 
     def __enter__(self) -> RawTerminal:
         import termios

@@ -326,7 +326,9 @@ class TurtleSim:
         """The canvas colour (background and trails, not turtles) under ``turtle``."""
         px = min(max(round(turtle.qx * METER_PX), 0), CANVAS_PX - 1)
         py = min(max(round(turtle.qy * METER_PX), 0), CANVAS_PX - 1)
-        r, g, b = self.path_image.getpixel((px, py))[:3]
+        pixel = self.path_image.getpixel((px, py))
+        assert isinstance(pixel, tuple)  # the canvas is an RGB image
+        r, g, b = pixel[:3]
         return int(r), int(g), int(b)
 
     # --- pictures ------------------------------------------------------------

@@ -90,14 +90,14 @@ class TurtleTfDemo:
             self.carrot = TransformBroadcaster(Node("broadcaster_carrot", bus=self.bus))
         self.carrot_moving = moving
 
-    def _send_carrot(self) -> None:
+    def _send_carrot(self, carrot: TransformBroadcaster) -> None:
         t = self.now()
         if self.carrot_moving:
             a = t * math.pi
             xyz = (2.0 * math.sin(a), 2.0 * math.cos(a), 0.0)
         else:
             xyz = (0.0, 2.0, 0.0)
-        self.carrot.send_transform(make_transform("turtle1", "carrot1", xyz, (0, 0, 0, 1), t))
+        carrot.send_transform(make_transform("turtle1", "carrot1", xyz, (0, 0, 0, 1), t))
 
     def now(self) -> float:
         """Simulated time, seconds."""
@@ -144,7 +144,7 @@ class TurtleTfDemo:
             self._drain()
             self.sim.step()
             if self.carrot is not None:
-                self._send_carrot()
+                self._send_carrot(self.carrot)
             self._drain()
             if self.steps % CONTROL_EVERY == 0:
                 self._control(follow, delay, fixed_frame)

@@ -63,6 +63,8 @@ class CanvasServer:
     @property
     def url(self) -> str:
         host, port = self._httpd.server_address[:2]
+        if isinstance(host, bytes):
+            host = host.decode()
         return f"http://{host}:{port}/"
 
     def png_bytes(self) -> bytes:
