@@ -172,6 +172,32 @@ def test_rospy_state_lives_in_one_context(monkeypatch):
     assert ctx.shutdown.is_set() and rospy.is_shutdown() and bus.is_shutdown
 
 
+def test_publish_during_shutdown_is_dropped_and_on_an_unregistered_topic_raises():
+    # rospy/topics.py, _PublisherImpl.publish: a closed topic during shutdown returns quietly
+    # (shutdown races the script's is_shutdown() test); otherwise "publish() to a closed topic".
+    result = run_python(
+        """
+        from workbench.compat import rospy
+        from workbench.msgs.std_msgs import String
+
+        rospy.init_node("closer")
+        gone = rospy.Publisher("gone", String, queue_size=1)
+        gone.unregister()
+        try:
+            gone.publish("x")
+        except rospy.ROSException as error:
+            print("unregistered:", error)
+        pub = rospy.Publisher("chatter", String, queue_size=1)
+        rospy.signal_shutdown("test")
+        pub.publish("after shutdown")
+        print("dropped quietly")
+        """
+    )
+    assert result.returncode == 0, result.stderr
+    assert "unregistered: publish() to a closed topic (/gone)" in result.stdout
+    assert "dropped quietly" in result.stdout
+
+
 @pytest.mark.multiprocess
 @pytest.mark.parametrize("sig", ["INT", "TERM"])
 def test_a_stop_signal_runs_the_shutdown_hooks_of_a_script_under_workbench_run(tmp_path, sig):

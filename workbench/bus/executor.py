@@ -192,7 +192,9 @@ class Executor:
         """Wake and join the workers (the stop event must be set already)."""
         with self._cond:
             self._cond.notify_all()
+        with self._start_lock:  # a worker being started now is started before it is joined
+            workers = list(self._workers)
         current = threading.current_thread()
-        for worker in list(self._workers):
+        for worker in workers:
             if worker is not current:
                 worker.join(timeout=2.0)

@@ -28,7 +28,7 @@ from typing import Any
 from workbench.bus import Bus, Node, default_bus
 from workbench.bus import Rate as _Rate
 from workbench.bus.entities import AnyMsg, TimerEvent, current_node
-from workbench.bus.errors import BusError, ServiceError, ShutdownInterrupt
+from workbench.bus.errors import BusError, ServiceError, ShutdownError, ShutdownInterrupt
 from workbench.bus.names import myargv as _myargv
 from workbench.errors import MessageError
 from workbench.msgs import Duration as _MsgDuration
@@ -503,6 +503,14 @@ class Publisher(_Deferred):
             self._impl.publish(*args, **kwargs)
         except MessageError as error:
             raise ROSSerializationException(error.message, hint=error.hint) from None
+        except ShutdownError:
+            # As rospy's _PublisherImpl.publish: shutdown can close the topic between a
+            # script's is_shutdown() test and its publish(); that publish is dropped quietly.
+            if not is_shutdown():
+                raise ROSException(
+                    f"publish() to a closed topic ({self._impl.topic})",
+                    hint="the publisher was unregistered",
+                ) from None
 
     def get_num_connections(self) -> int:
         return 0 if self._impl is None else self._impl.get_num_connections()
