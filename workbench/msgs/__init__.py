@@ -2,7 +2,7 @@
 
 The full Noetic message set comes from the rosbags typestore (definitions,
 md5sums and ROS 1 serialization); the types the labs need that it lacks
-(turtlesim, tf2_msgs, std_srvs, beginner_tutorials, rosserial_msgs ...) are
+(turtlesim, tf2_msgs, std_srvs, beginner_tutorials, rosserial_msgs, gazebo_msgs ...) are
 registered from their ``.msg``/``.srv`` text. Every type is a friendly class::
 
     from workbench.msgs.geometry_msgs import Twist, Vector3

@@ -1,9 +1,13 @@
 """Message and service definitions the labs need that the Noetic typestore lacks.
 
-The text of each entry is the package's own ``.msg``/``.srv`` file, verbatim.
+The text of each entry is the package's own ``.msg``/``.srv`` file, verbatim;
+the ``gazebo_msgs`` types, written as fields and constants only, are added from
+:mod:`workbench.msgs._gazebo_definitions`.
 """
 
 from __future__ import annotations
+
+from workbench.msgs import _gazebo_definitions
 
 #: "package/Name" -> .msg text
 MESSAGES: dict[str, str] = {
@@ -132,3 +136,6 @@ float32 angular
 ---
 """,
 }
+
+MESSAGES.update(_gazebo_definitions.MESSAGES)
+SERVICES.update(_gazebo_definitions.SERVICES)

@@ -222,7 +222,7 @@ _STORE_LOCK = threading.Lock()
 
 
 def store() -> TypeStore:
-    """The process-wide type store (built on first use, about 0.1 s)."""
+    """The process-wide type store (built on first use, about 0.15 s)."""
     global _STORE
     if _STORE is None:
         with _STORE_LOCK:
