@@ -1,0 +1,85 @@
+"""What the simulator needs to know about one model before Drake parses it.
+
+A :class:`SimModel` is produced from a URDF (with its ``<gazebo>`` extension
+blocks), an SDF ``<model>`` or a ``model://`` include, and consumed by
+:class:`workbench.sim.World`, which hands ``text`` to Drake's parser each time
+the diagram is (re)built. Everything Drake does not understand (plugins,
+``selfCollide``, per-model gravity) is lifted out of the text into fields here.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+
+@dataclass(frozen=True)
+class PluginSpec:
+    """One ``<plugin>`` element of a world, a model or a sensor.
+
+    Attributes:
+        name: The plugin's ``name`` attribute.
+        filename: The ``filename`` attribute: a Python file (``my_plugin.py``), an
+            entry point ``module:Class``, or a Gazebo library name (``libgazebo_ros_*.so``).
+        element: The whole ``<plugin>`` element as XML text (its children are the
+            plugin's parameters).
+        kind: ``"world"``, ``"model"`` or ``"sensor"``.
+        reference: The link (URDF ``<gazebo reference>``) or sensor the plugin belongs
+            to, or None.
+        base_dir: Folder of the file the plugin was declared in; a relative Python
+            file name is looked up there first.
+        source: File (and line) for messages, e.g. ``"worlds/demo.world:12"``.
+    """
+
+    name: str
+    filename: str
+    element: str
+    kind: str
+    reference: str | None = None
+    base_dir: Path | None = None
+    source: str = ""
+
+
+@dataclass
+class SimModel:
+    """A model ready for Drake's parser, plus what the simulator applies itself.
+
+    Attributes:
+        name: The model's name in the world (``-model`` of spawn_model); the text
+            already carries it (URDF ``<robot name>`` / SDF ``<model name>``).
+        format: ``"urdf"`` or ``"sdf"`` (the text's format for Drake).
+        text: URDF or SDF XML for ``Parser.AddModelsFromString``: name set, mesh URIs
+            absolute, Gazebo extensions translated into Drake's tags, ``<plugin>``
+            and ``<gazebo>`` elements removed, inertia made valid.
+        package_map: ``package://`` name -> folder, for Drake's parser.
+        root_link: The link whose pose is the model's pose (URDF root; SDF canonical
+            link, i.e. the first link).
+        static: Weld the model to the world where it is placed (URDF ``<static>``
+            in a ``<gazebo>`` block, SDF ``<static>``).
+        self_collide: Let the model's links collide with each other (Gazebo's
+            ``selfCollide``; off by default, as in Gazebo).
+        gravity: False when the model's ``<gravity>`` is off.
+        pose: ``(x, y, z, roll, pitch, yaw)`` of the model frame relative to where
+            it is placed (an SDF model's own ``<pose>``, removed from ``text``; the
+            world composes placement and this pose), m and rad.
+        plugins: Model and sensor plugins declared in the model.
+        sensors: ``<sensor>`` elements as XML text, with the link each belongs to.
+        warnings: One line per thing that was changed so Drake can load it (e.g. an
+            inertia that breaks the triangle inequality), naming link and file.
+        source: Where the model came from, for messages (a path or
+            ``"parameter /robot_description"``).
+    """
+
+    name: str
+    format: str
+    text: str
+    package_map: dict[str, str] = field(default_factory=dict)
+    root_link: str | None = None
+    static: bool = False
+    self_collide: bool = False
+    gravity: bool = True
+    pose: tuple[float, float, float, float, float, float] = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    plugins: list[PluginSpec] = field(default_factory=list)
+    sensors: list[tuple[str, str]] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    source: str = ""
