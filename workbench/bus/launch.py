@@ -94,17 +94,19 @@ class _Context:
 def find_package(name: str, near: Path | None = None) -> Path:
     """The directory of package ``name``: a folder with a package.xml naming it.
 
-    Looks beside and above ``near``, in the working directory and in the checkout.
+    Looks beside and above ``near``, in the working directory, in the checkout and in
+    workbench's ``examples/packages``.
 
     Raises:
         LaunchError: Not found.
     """
-    from workbench.paths import project_root
+    from workbench.paths import examples_dir, project_root
 
     roots: list[Path] = []
     if near is not None:
         roots += [near, *near.parents][:4]
-    roots += [Path.cwd(), project_root()]
+    # examples/packages holds the ROS packages the labs' launch files name (gazebo_ros ...).
+    roots += [Path.cwd(), project_root(), examples_dir() / "packages"]
     seen: set[Path] = set()
     for root in roots:
         if root in seen or not root.is_dir():
@@ -190,7 +192,9 @@ def run_command(command: str, path: Path) -> str:
     """Run a ``<param command=...>`` and return its output (xacro runs in-process Python)."""
     argv = shlex.split(command)
     if argv and Path(argv[0]).name in ("xacro", "xacro.py"):
-        argv = [sys.executable, "-m", "xacro", *argv[1:]]
+        # The xacro distribution on PyPI has no __main__: call its main() as its script does.
+        argv = [sys.executable, "-c", "import sys, xacro; sys.argv[0] = 'xacro'; xacro.main()"]
+        argv += shlex.split(command)[1:]
     try:
         done = subprocess.run(argv, capture_output=True, text=True, timeout=120)
     except (OSError, subprocess.TimeoutExpired) as error:

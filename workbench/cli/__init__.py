@@ -51,6 +51,8 @@ COMMANDS: dict[str, str] = {
     "bag": "record, inspect and play ROS 1 bag files (rosbag)",
     "turtlesim": "run the turtlesim simulator (turtlesim_node)",
     "teleop": "drive a turtle or a robot from the keyboard",
+    # simulation (Experiment 6, Additional Experiment 1)
+    "sim": "run the physics simulation server with the Gazebo ROS API (gzserver)",
     # frames (Experiment 4)
     "tf": "echo transforms and draw the frame tree (tf_echo, view_frames)",
     # planning (Experiments 9, 10)

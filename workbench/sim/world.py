@@ -38,6 +38,15 @@ from workbench.sim.controllers import (
     controller_output,
     make_command_system,
 )
+from workbench.sim.model_spec import SimModel
+from workbench.sim.scene import (
+    GROUND_NAME,
+    PlacedModel,
+    add_ground,
+    add_obstacle,
+    add_placed_model,
+    filter_self_collisions,
+)
 from workbench.sim.trajectory import TrackingReport, as_joint_trajectory
 from workbench.spatial import (
     Mesh,
@@ -46,10 +55,7 @@ from workbench.spatial import (
     as_rigid_transform,
     drake_shape,
     make_shape,
-    rigid_transform,
 )
-
-GROUND_NAME = "ground"
 
 
 @dataclass
@@ -57,9 +63,18 @@ class _RobotEntry:
     robot: Any
     controller_type: str | None
     gains: dict[str, Any] | None
+    X_WB: Any = None
     command: Any = None
     controller: Any = None
     joint_names: list[str] | None = None
+
+
+@dataclass
+class _Obstacle:
+    name: str
+    shape: Any
+    X_WB: Any
+    rgba: Any
 
 
 class World:
@@ -81,31 +96,61 @@ class World:
         *,
         ground: bool = True,
         ground_z: float = 0.0,
-        gravity: float = 9.81,
+        gravity: float | Sequence[float] = 9.81,
         publish_period: float = 0.01,
+        physics: Mapping[str, Any] | None = None,
     ) -> None:
-        from pydrake.multibody.plant import AddMultibodyPlantSceneGraph
-        from pydrake.systems.framework import DiagramBuilder
-
         if not time_step > 0:
             raise SimulationError(f"time_step must be positive, got {time_step}")
         self.time_step = float(time_step)
         self.bus = bus
         self.publish_period = float(publish_period)
-        self.builder = DiagramBuilder()
-        self.plant, self.scene_graph = AddMultibodyPlantSceneGraph(self.builder, self.time_step)
-        self.plant.mutable_gravity_field().set_gravity_vector([0.0, 0.0, -float(gravity)])
+        self.gravity_vector = _gravity_vector(gravity)
+        self.physics = dict(physics or {})
+        self._ground_z = float(ground_z) if ground else None
         self._robots: dict[str, _RobotEntry] = {}
-        self._obstacles: list[str] = []
+        self._obstacles: list[_Obstacle] = []
+        self._models: dict[str, PlacedModel] = {}
         self.diagram: Any = None
         self.simulator: Any = None
         self.context: Any = None
         self.visualizer: Any = None
+        self.meshcat: Any = None
+        self.contact_visualizer: Any = None
+        self.show_contacts = False
+        self.visual_period = 1.0 / 32.0
+        self.efforts_source: Any = None
+        self.rebuilds = 0
         self._node: Any = None
         self._publishers: dict[str, Any] = {}
         self._next_publish = 0.0
-        if ground:
-            self._add_ground(ground_z)
+        self._new_plant()
+        if self._ground_z is not None:
+            add_ground(self.plant, self._ground_z)
+
+    def _new_plant(self) -> None:
+        from pydrake.multibody.plant import AddMultibodyPlant, MultibodyPlantConfig
+        from pydrake.systems.framework import DiagramBuilder
+
+        self.builder = DiagramBuilder()
+        config = MultibodyPlantConfig(time_step=self.time_step)
+        for key, value in self.physics.items():
+            if key in ("static_friction", "dynamic_friction", "point_stiffness"):
+                continue
+            setattr(config, key, value)
+        self.plant, self.scene_graph = AddMultibodyPlant(config, self.builder)
+        if "dynamic_friction" in self.physics or "point_stiffness" in self.physics:
+            from pydrake.geometry import DefaultProximityProperties, SceneGraphConfig
+
+            defaults = DefaultProximityProperties()
+            defaults.static_friction = self.physics.get(
+                "static_friction", self.physics.get("dynamic_friction", 1.0)
+            )
+            defaults.dynamic_friction = self.physics.get("dynamic_friction", 1.0)
+            if "point_stiffness" in self.physics:
+                defaults.point_stiffness = self.physics["point_stiffness"]
+            self.scene_graph.set_config(SceneGraphConfig(default_proximity_properties=defaults))
+        self.plant.mutable_gravity_field().set_gravity_vector(self.gravity_vector)
 
     # --- construction ------------------------------------------------------------
 
@@ -117,7 +162,7 @@ class World:
     @property
     def obstacles(self) -> list[str]:
         """Names of the static obstacles (ground excluded)."""
-        return list(self._obstacles)
+        return [obstacle.name for obstacle in self._obstacles]
 
     def add_robot(
         self,
@@ -143,9 +188,20 @@ class World:
         Returns:
             The :class:`workbench.model.Robot`.
         """
+        self._require_open("add_robot")
+        robot = self._load_robot(source, name, X_WB, floating_base)
+        if robot.name in self._robots or robot.name in self._models:
+            raise SimulationError(
+                f"a model named '{robot.name}' is already in the world", hint="pass name=..."
+            )
+        self._robots[robot.name] = _RobotEntry(
+            robot, None if floating_base else controller, dict(gains or {}), X_WB
+        )
+        return robot
+
+    def _load_robot(self, source: Any, name: str | None, X_WB: Any, floating_base: bool) -> Any:
         from workbench.model import load_robot
 
-        self._require_open("add_robot")
         robot = load_robot(
             source,
             builder=self.builder,
@@ -154,21 +210,89 @@ class World:
             finalize=False,
             model_name=name,
         )
-        if robot.name in self._robots:
-            raise SimulationError(
-                f"a robot named '{robot.name}' is already in the world", hint="pass name=..."
-            )
+        root = self.plant.GetBodyByName(robot.root_link, robot.model_instance)
         if not floating_base:
-            root = self.plant.GetBodyByName(robot.root_link, robot.model_instance)
             self.plant.WeldFrames(self.plant.world_frame(), root.body_frame(), _transform(X_WB))
         elif X_WB is not None:
-            root = self.plant.GetBodyByName(robot.root_link, robot.model_instance)
-            self.plant.SetDefaultFreeBodyPose(root, _transform(X_WB))
+            self.plant.SetDefaultFloatingBaseBodyPose(root, _transform(X_WB))
         robot.floating_base = floating_base
-        self._robots[robot.name] = _RobotEntry(
-            robot, None if floating_base else controller, dict(gains or {})
-        )
         return robot
+
+    def add_model(
+        self,
+        model: SimModel,
+        X_WM: Any = None,
+        *,
+        joint_positions: Mapping[str, float] | None = None,
+    ) -> None:
+        """Put a Gazebo-style model into the world, also while it runs.
+
+        The model is free (it falls, collides and can be pushed) unless it is
+        static; it has no controller. Once the world is built, adding a model
+        rebuilds the diagram and every other model keeps its state.
+
+        Args:
+            model: The model (see :mod:`workbench.sim.model_spec`).
+            X_WM: Where its model frame goes (see the module docstring).
+            joint_positions: Initial positions of 1-dof joints by name, rad or m.
+
+        Raises:
+            SimulationError: The name is in use (the world is unchanged), the pose is
+                not finite, or Drake cannot load the model.
+        """
+        if model.name in self._models or model.name in self._robots or model.name == GROUND_NAME:
+            raise SimulationError(f"model name '{model.name}' is already in use")
+        X = _model_transform(model.name, X_WM)
+        placed = PlacedModel(model, X, dict(joint_positions or {}), initial_X_WM=X)
+        if self.diagram is None:
+            self._models[model.name] = placed
+            try:
+                add_placed_model(self.plant, placed)
+            except SimulationError:
+                del self._models[model.name]
+                raise
+            return
+        self._models[model.name] = placed
+        try:
+            self.rebuild()
+        except SimulationError:
+            del self._models[model.name]
+            self.rebuild()
+            raise
+
+    def remove_model(self, name: str) -> None:
+        """Delete a model (or robot) from the world; the others keep their state."""
+        if name in self._robots:
+            del self._robots[name]
+        elif name in self._models:
+            del self._models[name]
+        else:
+            raise SimulationError(f"no model named '{name}' in the world")
+        if self.diagram is not None:
+            self.rebuild()
+        else:
+            self._replay()
+
+    @property
+    def models(self) -> dict[str, PlacedModel]:
+        """The Gazebo-style models by name (robots added with add_robot are in ``robots``)."""
+        return dict(self._models)
+
+    def model_names(self) -> list[str]:
+        """Every model in the world, in Gazebo's sense: ground, robots and models."""
+        names = [GROUND_NAME] if self._ground_z is not None else []
+        return names + list(self._robots) + list(self._models)
+
+    def model_instance(self, name: str) -> Any:
+        """The Drake model instance of a model or robot."""
+        if name in self._models:
+            return self._models[name].instance
+        if name in self._robots:
+            return self._robots[name].robot.model_instance
+        raise SimulationError(
+            f"no model named '{name}' in the world",
+            hint="models: " + (", ".join(self.model_names()) or "none"),
+        )
 
     def add_box(self, name: str, size: Sequence[float], X_WB: Any = None, rgba=None) -> None:
         """Add a static box with edge lengths ``size`` (x, y, z in m) centred at ``X_WB``."""
@@ -214,12 +338,25 @@ class World:
         """
         if self.diagram is not None:
             return
+        if meshcat is not None:
+            self.meshcat = meshcat
+        self._assemble()
+        self.simulator.Initialize()
+
+    def _assemble(self) -> None:
         from pydrake.systems.analysis import Simulator
-        from pydrake.systems.primitives import Adder, MatrixGain, Saturation
+        from pydrake.systems.primitives import Adder, ConstantVectorSource, MatrixGain, Saturation
 
         plant = self.plant
         plant.Finalize()
-        forces = []
+        for placed in self._models.values():
+            if not placed.model.self_collide:
+                filter_self_collisions(plant, self.scene_graph, placed.instance)
+        self.efforts_source = self.builder.AddSystem(
+            ConstantVectorSource(np.zeros(plant.num_velocities()))
+        )
+        self.efforts_source.set_name("joint_efforts")
+        forces = [self.efforts_source.get_output_port(0)]
         for entry in self._robots.values():
             robot = entry.robot
             joints = [
@@ -272,25 +409,310 @@ class World:
             forces.append(gain.get_output_port(0))
             entry.command = command
             entry.controller = controller
-        if forces:
-            adder = self.builder.AddSystem(Adder(len(forces), plant.num_velocities()))
-            for i, port in enumerate(forces):
-                self.builder.Connect(port, adder.get_input_port(i))
-            self.builder.Connect(
-                adder.get_output_port(0), plant.get_applied_generalized_force_input_port()
-            )
-        if meshcat is not None:
-            from pydrake.geometry import MeshcatVisualizer
-
-            self.visualizer = MeshcatVisualizer.AddToBuilder(
-                self.builder, self.scene_graph, meshcat
-            )
+        adder = self.builder.AddSystem(Adder(len(forces), plant.num_velocities()))
+        for i, port in enumerate(forces):
+            self.builder.Connect(port, adder.get_input_port(i))
+        self.builder.Connect(
+            adder.get_output_port(0), plant.get_applied_generalized_force_input_port()
+        )
+        if self.meshcat is not None:
+            self._add_visualizers()
         self.diagram = self.builder.Build()
         self.simulator = Simulator(self.diagram)
         self.context = self.simulator.get_mutable_context()
+        self.set_body_wrenches([])
+
+    def _add_visualizers(self) -> None:
+        from pydrake.geometry import MeshcatVisualizer, MeshcatVisualizerParams, Role
+
+        params = MeshcatVisualizerParams()
+        params.role = Role.kIllustration
+        params.publish_period = self.visual_period
+        self.visualizer = MeshcatVisualizer.AddToBuilder(
+            self.builder, self.scene_graph, self.meshcat, params
+        )
+        if self.show_contacts:
+            from pydrake.multibody.meshcat import ContactVisualizer, ContactVisualizerParams
+
+            contact_params = ContactVisualizerParams()
+            contact_params.publish_period = self.visual_period
+            self.contact_visualizer = ContactVisualizer.AddToBuilder(
+                self.builder, self.plant, self.meshcat, contact_params
+            )
+
+    def _replay(self) -> None:
+        """A fresh (unfinalized) plant with the ground, obstacles, robots and models re-added."""
+        self._new_plant()
+        if self._ground_z is not None:
+            add_ground(self.plant, self._ground_z)
+        for obstacle in self._obstacles:
+            add_obstacle(self.plant, obstacle.name, obstacle.shape, obstacle.X_WB, obstacle.rgba)
+        for name, entry in self._robots.items():
+            floating = bool(entry.robot.floating_base)
+            entry.robot = self._load_robot(entry.robot, name, entry.X_WB, floating)
+            entry.command = entry.controller = None
+        for placed in self._models.values():
+            add_placed_model(self.plant, placed)
+
+    def rebuild(self) -> None:
+        """Build the diagram again from what the world holds, keeping time and every model's state.
+
+        Called by :meth:`add_model` and :meth:`remove_model` on a built world.
+        Positions and velocities are carried over by model name; joint
+        commands of controlled robots too; applied efforts and wrenches are cleared.
+        """
+        if self.diagram is None:
+            self._replay()
+            return
+        saved = self._save_state()
+        self.diagram = self.simulator = self.context = None
+        self.visualizer = self.contact_visualizer = None
+        self._replay()
+        self._assemble()
+        self._restore_state(saved)
         self.simulator.Initialize()
+        self.rebuilds += 1
+
+    def _save_state(self) -> dict[str, Any]:
+        plant = self.plant
+        plant_context = plant.GetMyContextFromRoot(self.context)
+        states: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+        for name in [*self._robots, *self._models]:
+            instance = self.model_instance(name)
+            if instance is None:  # being added now
+                continue
+            states[name] = (
+                plant.GetPositions(plant_context, instance).copy(),
+                plant.GetVelocities(plant_context, instance).copy(),
+            )
+        commands = {
+            name: self._command_of(entry)
+            for name, entry in self._robots.items()
+            if entry.command is not None
+        }
+        return {"time": self.time, "states": states, "commands": commands}
+
+    def _restore_state(self, saved: dict[str, Any]) -> None:
+        self.context.SetTime(saved["time"])
+        plant = self.plant
+        plant_context = plant.GetMyMutableContextFromRoot(self.context)
+        for name, (q, v) in saved["states"].items():
+            if name not in self._robots and name not in self._models:
+                continue
+            instance = self.model_instance(name)
+            if plant.num_positions(instance) == len(q) and plant.num_velocities(instance) == len(v):
+                plant.SetPositions(plant_context, instance, q)
+                plant.SetVelocities(plant_context, instance, v)
+        for name, command in saved["commands"].items():
+            entry = self._robots.get(name)
+            if entry is not None and entry.command is not None:
+                self._set_command(entry, command)
 
     # --- state -------------------------------------------------------------------
+
+    def root_body(self, name: str) -> Any:
+        """The body whose pose is the model's pose (the URDF root / SDF canonical link)."""
+        instance = self.model_instance(name)
+        if name in self._robots:
+            return self.plant.GetBodyByName(self._robots[name].robot.root_link, instance)
+        placed = self._models[name]
+        if placed.model.root_link and self.plant.HasBodyNamed(placed.model.root_link, instance):
+            return self.plant.GetBodyByName(placed.model.root_link, instance)
+        return self.plant.get_body(self.plant.GetBodyIndices(instance)[0])
+
+    def body(self, scoped_name: str) -> Any:
+        """A body by Gazebo's scoped name ``model::link`` (or a link name unique in the world)."""
+        self._require_built("body")
+        plant = self.plant
+        if "::" in scoped_name:
+            model, _, link = scoped_name.rpartition("::")
+            instance = self.model_instance(model)
+            if not plant.HasBodyNamed(link, instance):
+                raise SimulationError(f"model '{model}' has no link '{link}'")
+            return plant.GetBodyByName(link, instance)
+        from pydrake.multibody.tree import BodyIndex
+
+        matches = [
+            plant.get_body(BodyIndex(index))
+            for index in range(1, plant.num_bodies())
+            if plant.get_body(BodyIndex(index)).name() == scoped_name
+        ]
+        if len(matches) != 1:
+            raise SimulationError(
+                f"no link named '{scoped_name}' in the world"
+                if not matches
+                else f"link name '{scoped_name}' is in several models",
+                hint="name it as model::link",
+            )
+        return matches[0]
+
+    def get_model_pose(self, name: str) -> Any:
+        """Pose of a model's frame in the world, ``X_WM`` (a RigidTransform)."""
+        self._require_built("get_model_pose")
+        plant_context = self.plant.GetMyContextFromRoot(self.context)
+        X_WR = self.plant.EvalBodyPoseInWorld(plant_context, self.root_body(name))
+        placed = self._models.get(name)
+        if placed is None or placed.X_MR is None:
+            return X_WR
+        return X_WR.multiply(placed.X_MR.inverse())
+
+    def get_model_twist(self, name: str) -> tuple[np.ndarray, np.ndarray]:
+        """``(v_W, w_W)``: velocity of the model's root link origin and its angular velocity in W."""
+        self._require_built("get_model_twist")
+        plant_context = self.plant.GetMyContextFromRoot(self.context)
+        V = self.plant.EvalBodySpatialVelocityInWorld(plant_context, self.root_body(name))
+        return np.array(V.translational()), np.array(V.rotational())
+
+    def set_model_state(
+        self,
+        name: str,
+        X_WM: Any,
+        linear: Sequence[float] | None = None,
+        angular: Sequence[float] | None = None,
+    ) -> None:
+        """Move a model to ``X_WM`` with root velocities ``linear``/``angular`` (W, m/s, rad/s).
+
+        A free model is teleported in place; a static one is welded anew (the
+        diagram is rebuilt, other models keep their state).
+        """
+        self._require_built("set_model_state")
+        self.model_instance(name)  # checks the name
+        X = _model_transform(name, X_WM)
+        for label, vector in (("linear", linear), ("angular", angular)):
+            if vector is not None and not np.all(np.isfinite(np.asarray(vector, dtype=float))):
+                raise SimulationError(f"model '{name}': the {label} velocity is not finite")
+        body = self.root_body(name)
+        placed = self._models.get(name)
+        if not body.is_floating_base_body():
+            if placed is None:
+                raise SimulationError(
+                    f"robot '{name}' is welded to the world and cannot be moved",
+                    hint="add it with floating_base=True",
+                )
+            placed.X_WM = X
+            self.rebuild()
+            return
+        plant_context = self.plant.GetMyMutableContextFromRoot(self.context)
+        X_MR = placed.X_MR if placed is not None and placed.X_MR is not None else None
+        self.plant.SetFloatingBaseBodyPoseInWorldFrame(
+            plant_context, body, X if X_MR is None else X.multiply(X_MR)
+        )
+        from pydrake.multibody.math import SpatialVelocity
+
+        V = SpatialVelocity(
+            np.asarray(angular if angular is not None else np.zeros(3), dtype=float),
+            np.asarray(linear if linear is not None else np.zeros(3), dtype=float),
+        )
+        self.plant.SetFreeBodySpatialVelocity(plant_context, body, V)
+
+    def link_states(self) -> list[tuple[str, Any, Any]]:
+        """``(model::link, X_WL, V_WL)`` of every link of every model (Gazebo's link_states)."""
+        self._require_built("link_states")
+        plant = self.plant
+        plant_context = plant.GetMyContextFromRoot(self.context)
+        states = []
+        for name in [*self._robots, *self._models]:
+            for index in plant.GetBodyIndices(self.model_instance(name)):
+                body = plant.get_body(index)
+                states.append(
+                    (
+                        f"{name}::{body.name()}",
+                        plant.EvalBodyPoseInWorld(plant_context, body),
+                        plant.EvalBodySpatialVelocityInWorld(plant_context, body),
+                    )
+                )
+        return states
+
+    def set_body_wrenches(
+        self, wrenches: Sequence[tuple[Any, Sequence[float], Sequence[float]]]
+    ) -> None:
+        """Apply ``(body, force_W, torque_W)`` at each body's origin until changed (N, N m).
+
+        Replaces the wrenches applied before; ``[]`` removes them.
+        """
+        from pydrake.multibody.math import SpatialForce
+        from pydrake.multibody.plant import ExternallyAppliedSpatialForce
+
+        self._require_built("set_body_wrenches")
+        forces = []
+        for body, force, torque in wrenches:
+            applied = ExternallyAppliedSpatialForce()
+            applied.body_index = body.index()
+            applied.p_BoBq_B = np.zeros(3)
+            applied.F_Bq_W = SpatialForce(
+                np.asarray(torque, dtype=float), np.asarray(force, dtype=float)
+            )
+            forces.append(applied)
+        plant_context = self.plant.GetMyMutableContextFromRoot(self.context)
+        self.plant.get_applied_spatial_force_input_port().FixValue(plant_context, forces)
+
+    def set_joint_efforts(self, efforts: Mapping[tuple[str, str], float]) -> None:
+        """Apply ``{(model, joint): effort}`` (N m or N) until changed; ``{}`` removes them."""
+        self._require_built("set_joint_efforts")
+        tau = np.zeros(self.plant.num_velocities())
+        for (model, joint_name), effort in efforts.items():
+            joint = self.joint(model, joint_name)
+            if joint.num_velocities() != 1:
+                raise SimulationError(f"joint '{joint_name}' of '{model}' is not a 1-dof joint")
+            tau[joint.velocity_start()] += float(effort)
+        source_context = self.efforts_source.GetMyMutableContextFromRoot(self.context)
+        self.efforts_source.get_mutable_source_value(source_context).set_value(tau)
+
+    def set_joint_positions(self, model: str, positions: Mapping[str, float]) -> None:
+        """Move 1-dof joints of a model to ``{joint: position}`` now, at rest (rad or m)."""
+        self._require_built("set_joint_positions")
+        plant_context = self.plant.GetMyMutableContextFromRoot(self.context)
+        q = self.plant.GetPositions(plant_context).copy()
+        v = self.plant.GetVelocities(plant_context).copy()
+        for joint_name, value in positions.items():
+            joint = self.joint(model, joint_name)
+            if joint.num_positions() != 1 or not np.isfinite(value):
+                raise SimulationError(
+                    f"joint '{joint_name}' of '{model}': not a 1-dof joint or not a finite value"
+                )
+            q[joint.position_start()] = float(value)
+            v[joint.velocity_start()] = 0.0
+        self.plant.SetPositions(plant_context, q)
+        self.plant.SetVelocities(plant_context, v)
+
+    def joint(self, model: str, joint_name: str) -> Any:
+        """A joint of a model by name."""
+        instance = self.model_instance(model)
+        if not self.plant.HasJointNamed(joint_name, instance):
+            from workbench.sim.scene import joint_names
+
+            raise SimulationError(
+                f"model '{model}' has no joint '{joint_name}'",
+                hint="joints: " + (", ".join(joint_names(self.plant, instance)) or "none"),
+            )
+        return self.plant.GetJointByName(joint_name, instance)
+
+    def reset(self, *, time: bool = True) -> None:
+        """Every model back to where it was spawned, at rest (``time``: the clock to 0 too)."""
+        self._require_built("reset")
+        plant_context = self.plant.GetMyMutableContextFromRoot(self.context)
+        for placed in self._models.values():
+            placed.X_WM = placed.initial_X_WM
+        static_moved = any(
+            p.model.static and p.X_WM is not p.initial_X_WM for p in self._models.values()
+        )
+        if static_moved:
+            self.rebuild()
+            plant_context = self.plant.GetMyMutableContextFromRoot(self.context)
+        self.plant.SetDefaultState(plant_context, plant_context.get_mutable_state())
+        for entry in self._robots.values():
+            if entry.command is not None:
+                q0 = self.plant.GetPositions(plant_context, entry.robot.model_instance)
+                self._set_command(entry, Command(q0.copy()))
+        if time:
+            self.context.SetTime(0.0)
+            self._next_publish = 0.0
+        self.simulator.Initialize()
+
+    def state_is_finite(self) -> bool:
+        """False once the simulation blew up (a NaN or infinite position or velocity)."""
+        plant_context = self.plant.GetMyContextFromRoot(self.context)
+        return bool(np.all(np.isfinite(self.plant.GetPositionsAndVelocities(plant_context))))
 
     @property
     def time(self) -> float:
@@ -505,37 +927,14 @@ class World:
 
     # --- helpers -------------------------------------------------------------------
 
-    def _add_ground(self, z: float) -> None:
-        # A thick box rather than a HalfSpace: same contact, and Drake's
-        # deformable-contact warning about half spaces stays quiet.
-        from pydrake.geometry import Box
-        from pydrake.multibody.plant import CoulombFriction
-
-        world = self.plant.world_body()
-        X_WG = rigid_transform([0.0, 0.0, z - 0.5])
-        self.plant.RegisterCollisionGeometry(
-            world, X_WG, Box(20.0, 20.0, 1.0), GROUND_NAME, CoulombFriction(0.8, 0.6)
-        )
-        self.plant.RegisterVisualGeometry(
-            world,
-            rigid_transform([0.0, 0.0, z - 0.005]),
-            Box(4.0, 4.0, 0.01),
-            GROUND_NAME,
-            np.array([0.85, 0.85, 0.85, 1.0]),
-        )
-
     def _add_obstacle(self, name: str, shape: Any, X_WB: Any, rgba: Any) -> None:
-        from pydrake.multibody.plant import CoulombFriction
-
         self._require_open(f"add '{name}'")
-        if not name or name in self._obstacles or name == GROUND_NAME:
+        taken = {o.name for o in self._obstacles} | {GROUND_NAME}
+        if not name or name in taken:
             raise SimulationError(f"obstacle name '{name}' is empty or already used")
-        X = _transform(X_WB)
-        world = self.plant.world_body()
-        self.plant.RegisterCollisionGeometry(world, X, shape, name, CoulombFriction(0.8, 0.6))
-        color = np.array(rgba if rgba is not None else [0.55, 0.45, 0.35, 1.0], dtype=float)
-        self.plant.RegisterVisualGeometry(world, X, shape, name, color)
-        self._obstacles.append(name)
+        obstacle = _Obstacle(name, shape, _transform(X_WB), rgba)
+        add_obstacle(self.plant, obstacle.name, obstacle.shape, obstacle.X_WB, obstacle.rgba)
+        self._obstacles.append(obstacle)
 
     def _geometry_label(self, inspector: Any, geometry_id: Any) -> str:
         body = self.plant.GetBodyFromFrameId(inspector.GetFrameId(geometry_id))
@@ -612,3 +1011,27 @@ def _transform(X: Any) -> Any:
         return as_rigid_transform(X)
     except SpatialError as error:
         raise SimulationError(error.message, hint=error.hint) from None
+
+
+def _model_transform(name: str, X: Any) -> Any:
+    """``_transform`` whose errors name the model and say the pose is not finite."""
+    try:
+        transform = as_rigid_transform(X)
+    except SpatialError as error:
+        raise SimulationError(
+            f"model '{name}': the pose is not finite or malformed: {error.message}"
+        ) from None
+    if not np.all(np.isfinite(transform.GetAsMatrix4())):
+        raise SimulationError(f"model '{name}': the pose is not finite")
+    return transform
+
+
+def _gravity_vector(gravity: float | Sequence[float]) -> np.ndarray:
+    """``9.81`` (m/s^2 along -z) or a 3-vector in W, checked finite."""
+    if isinstance(gravity, (int, float)):
+        vector = np.array([0.0, 0.0, -float(gravity)])
+    else:
+        vector = np.asarray(gravity, dtype=float).reshape(-1)
+    if vector.shape != (3,) or not np.all(np.isfinite(vector)):
+        raise SimulationError(f"gravity must be a number or a finite 3-vector, got {gravity!r}")
+    return vector

@@ -1,0 +1,243 @@
+"""Run the simulation server on the bus: ``workbench sim`` and the ``gazebo_ros gzserver`` node.
+
+:func:`run_server` loads a world (an SDF file or a shipped name), starts the
+node ``/gazebo`` with the Gazebo ROS API, a live Meshcat view (unless
+headless), the world's and the command line's plugins, and steps until
+``until`` or a stop signal; it then writes the ``--html`` recording.
+"""
+
+from __future__ import annotations
+
+import argparse
+import logging
+import os
+import random
+import sys
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from workbench.errors import SimulationError
+
+_LOG = logging.getLogger("workbench.sim")
+
+
+@dataclass
+class ServerOptions:
+    """What ``workbench sim`` and ``gzserver`` take (see ``workbench sim --help``)."""
+
+    world: str = "empty"
+    paused: bool = False
+    real_time_factor: float | None = None
+    fast: bool = False
+    until: float | None = None
+    html: str | None = None
+    seed: int = 0
+    plugins: list[str] = field(default_factory=list)
+    view: bool = True
+    contacts: bool = False
+    port: int | None = None
+    start_core: bool = True
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """The options of ``workbench sim`` (and of the ``gazebo_ros gzserver`` node)."""
+    parser.add_argument(
+        "world", nargs="?", default="empty", help="an SDF .world/.sdf file or a shipped world name"
+    )
+    parser.add_argument("--paused", "-u", action="store_true", help="start with physics paused")
+    speed = parser.add_mutually_exclusive_group()
+    speed.add_argument(
+        "--real-time-factor", type=float, metavar="X", help="run X times real time (default 1)"
+    )
+    speed.add_argument("--fast", action="store_true", help="run as fast as possible")
+    parser.add_argument("--until", type=float, metavar="T", help="stop at simulated time T, s")
+    parser.add_argument("--html", metavar="OUT", help="write an animated recording when it stops")
+    parser.add_argument("--seed", type=int, default=0, help="seed for plugins' random numbers")
+    parser.add_argument(
+        "--plugin",
+        action="append",
+        default=[],
+        metavar="[MODEL=]FILE",
+        help="load a world plugin, or a model plugin for MODEL (repeatable)",
+    )
+    parser.add_argument("--headless", action="store_true", help="no Meshcat view")
+    parser.add_argument("--contacts", action="store_true", help="draw contact forces")
+    parser.add_argument("--port", type=int, help="Meshcat port (default: first free from 7000)")
+
+
+def options_from(args: argparse.Namespace) -> ServerOptions:
+    """:class:`ServerOptions` from parsed :func:`add_arguments` arguments."""
+    return ServerOptions(
+        world=args.world,
+        paused=args.paused,
+        real_time_factor=args.real_time_factor,
+        fast=args.fast,
+        until=args.until,
+        html=args.html,
+        seed=args.seed,
+        plugins=list(args.plugin),
+        view=not args.headless or bool(args.html),
+        contacts=args.contacts,
+        port=args.port,
+    )
+
+
+def build_server(options: ServerOptions, bus: Any = None) -> tuple[Any, Any, Any]:
+    """The world, server and live view (or None) for ``options``, with its models and plugins.
+
+    Raises:
+        SimulationError: An unreadable world, an unloadable model, bad options.
+    """
+    from workbench.sim.server import SERVER_PHYSICS, SimServer
+    from workbench.sim.world import World
+    from workbench.sim.world_file import load_world
+
+    if options.until is not None and not (options.until >= 0):
+        raise SimulationError(f"--until must be a time >= 0, got {options.until}")
+    rtf = options.real_time_factor
+    if rtf is not None and not (rtf > 0):
+        raise SimulationError(f"--real-time-factor must be positive, got {rtf}")
+    random.seed(options.seed)
+    np.random.seed(options.seed)
+    world_file = load_world(options.world)
+    physics = world_file.physics
+    world = World(
+        time_step=physics.time_step or SERVER_PHYSICS["time_step"],
+        ground=world_file.ground_plane,
+        gravity=physics.gravity if physics.gravity is not None else 9.81,
+        physics=SERVER_PHYSICS["physics"],
+    )
+    for item in world_file.models:
+        world.add_model(item.model, {"xyz": item.pose[:3], "rpy": item.pose[3:]})
+        for warning in item.model.warnings:
+            _LOG.warning("%s", warning)
+    view = None
+    if options.view:
+        from workbench.sim.view import LiveView
+        from workbench.viz import Viewer
+
+        viewer = Viewer(port=options.port) if options.port else Viewer.instance()
+        view = LiveView(world, viewer.meshcat, contacts=options.contacts, record=bool(options.html))
+    if options.fast:
+        speed = 0.0
+    elif rtf is not None:
+        speed = rtf
+    else:
+        speed = physics.real_time_factor or 1.0
+    server = SimServer(world, bus=bus, paused=options.paused, real_time_factor=speed)
+    if view is not None:
+        view.attach(server)
+    for spec in world_file.plugins:
+        server.load_plugin(spec)
+    for item in world_file.models:
+        for spec in item.model.plugins:
+            if spec.kind == "model":
+                server.load_plugin(spec, item.model.name)
+    for text in options.plugins:
+        model, _, filename = text.rpartition("=")
+        server.load_plugin(_command_line_plugin(filename, model), model or None)
+    return world, server, view
+
+
+def _command_line_plugin(filename: str, model: str) -> Any:
+    from workbench.sim.model_spec import PluginSpec
+
+    name = Path(filename.partition(":")[0]).stem
+    return PluginSpec(
+        name=name,
+        filename=filename,
+        element=f'<plugin name="{name}" filename="{filename}"/>',
+        kind="model" if model else "world",
+        base_dir=Path.cwd(),
+        source="--plugin",
+    )
+
+
+def run_server(options: ServerOptions) -> int:
+    """Serve until ``until`` or a stop signal; 0 when it ran, 1 when it could not start."""
+    from workbench.bus import Bus, Node
+    from workbench.sim.gazebo_ros import GazeboRosApi
+
+    core = None
+    if options.start_core:
+        core = _core_if_none()
+    bus = Bus.auto(quiet=core is not None)
+    node = Node("gazebo", bus=bus)
+    server = api = view = None
+    try:
+        world, server, view = build_server(options, bus)
+        api = GazeboRosApi(server, node)
+        if view is not None:
+            print(f"[INFO] Meshcat: {view.meshcat.web_url()}", flush=True)
+        state = "paused" if server.paused else "running"
+        print(
+            f"[INFO] workbench sim: world '{options.world}' {state}, models: "
+            f"{', '.join(world.model_names()) or 'none'}; /gazebo services ready",
+            flush=True,
+        )
+        try:
+            server.run(until=options.until)
+        finally:
+            if server.error is not None:
+                print(f"[ERROR] {server.error}", file=sys.stderr)
+            print(f"[INFO] stopped at t = {world.time:.3f} s", flush=True)
+        return 0
+    finally:
+        if view is not None and options.html:
+            path = view.save_html(options.html)
+            print(f"[INFO] wrote {path}", flush=True)
+        if api is not None:
+            api.close()
+        if server is not None:
+            server.stop()
+        if view is not None:
+            view.close()
+        node.shutdown()
+        bus.shutdown()
+        if core is not None:
+            core.close()
+
+
+def _core_if_none() -> Any:
+    """A core of our own when none is reachable (as roslaunch starts a master), else None."""
+    from workbench.bus.bus import master_uri
+    from workbench.bus.core import Core
+    from workbench.bus.zconfig import parse_uri, port_open
+
+    uri = master_uri()
+    if uri in ("inproc", "none"):
+        return None
+    _proto, host, port = parse_uri(uri)
+    if port_open(host, port):
+        return None
+    try:
+        core = Core(uri)
+    except Exception as error:  # noqa: BLE001 - any failure means: run in-process
+        _LOG.info("no core started (%s); running in-process", error)
+        return None
+    print(f"[INFO] started core service [{uri}]", flush=True)
+    return core
+
+
+def gzserver_main(argv: Sequence[str] | None = None) -> int:
+    """``gazebo_ros gzserver`` / ``gazebo``: the server as launch files start it.
+
+    Accepts gzserver's ``-u`` (paused) and a world file, plus ``workbench sim``'s options.
+    """
+    from workbench.bus.names import parse_command_line
+
+    parser = argparse.ArgumentParser(prog="gzserver", description="the workbench sim server")
+    add_arguments(parser)
+    parser.add_argument("-e", metavar="ENGINE", help="accepted, ignored (physics engine)")
+    parser.add_argument("--verbose", action="store_true", help="accepted, ignored")
+    raw = list(sys.argv[1:] if argv is None else argv)
+    args = parser.parse_args(parse_command_line(raw).others)
+    options = options_from(args)
+    options.start_core = False
+    if os.environ.get("WORKBENCH_SIM_HEADLESS") == "1":
+        options.view = bool(options.html)
+    return run_server(options)

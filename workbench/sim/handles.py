@@ -1,0 +1,141 @@
+"""What a plugin holds: a handle on its model or on the world (Gazebo's ``physics::Model``/``World``).
+
+Handles look the model up by name on every call, so they stay valid when the
+server rebuilds its diagram (a spawn or delete elsewhere). Units: m, rad, s,
+N, N m; vectors in the world frame W.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from workbench.errors import SimulationError
+
+if TYPE_CHECKING:
+    from workbench.sim.server import SimServer
+
+
+class ModelHandle:
+    """One model of a running simulation."""
+
+    def __init__(self, server: SimServer, name: str, owner: Any = None) -> None:
+        self._server = server
+        self.name = name
+        self._owner = owner
+
+    @property
+    def _world(self) -> Any:
+        return self._server.world
+
+    def _context(self) -> Any:
+        return self._world.plant.GetMyMutableContextFromRoot(self._world.context)
+
+    @property
+    def joint_names(self) -> list[str]:
+        """The model's joints that have positions."""
+        from workbench.sim.scene import joint_names
+
+        return joint_names(self._world.plant, self._world.model_instance(self.name))
+
+    @property
+    def link_names(self) -> list[str]:
+        """The model's links."""
+        plant = self._world.plant
+        return [
+            plant.get_body(i).name()
+            for i in plant.GetBodyIndices(self._world.model_instance(self.name))
+        ]
+
+    def pose(self) -> Any:
+        """``X_WM``, the model frame in the world (a RigidTransform)."""
+        return self._world.get_model_pose(self.name)
+
+    def linear_velocity(self) -> np.ndarray:
+        """Velocity of the model's root link origin in W, m/s."""
+        return self._world.get_model_twist(self.name)[0]
+
+    def angular_velocity(self) -> np.ndarray:
+        """Angular velocity of the model's root link in W, rad/s."""
+        return self._world.get_model_twist(self.name)[1]
+
+    def set_pose(self, X_WM: Any) -> None:
+        """Teleport the model (velocities kept)."""
+        v, w = self._world.get_model_twist(self.name)
+        self._world.set_model_state(self.name, X_WM, v, w)
+
+    def set_linear_velocity(self, v_W: Sequence[float]) -> None:
+        """Set the root link's linear velocity now (Gazebo's ``Model::SetLinearVel``)."""
+        _, w = self._world.get_model_twist(self.name)
+        self._world.set_model_state(self.name, self.pose(), v_W, w)
+
+    def set_angular_velocity(self, w_W: Sequence[float]) -> None:
+        """Set the root link's angular velocity now (Gazebo's ``Model::SetAngularVel``)."""
+        v, _ = self._world.get_model_twist(self.name)
+        self._world.set_model_state(self.name, self.pose(), v, w_W)
+
+    def joint_position(self, joint: str) -> float:
+        """A 1-dof joint's position, rad or m."""
+        item = self._world.joint(self.name, joint)
+        return float(self._world.plant.GetPositions(self._context())[item.position_start()])
+
+    def joint_velocity(self, joint: str) -> float:
+        """A 1-dof joint's velocity, rad/s or m/s."""
+        item = self._world.joint(self.name, joint)
+        return float(self._world.plant.GetVelocities(self._context())[item.velocity_start()])
+
+    def set_joint_position(self, joint: str, position: float) -> None:
+        """Move a 1-dof joint to ``position`` now."""
+        item = self._world.joint(self.name, joint)
+        q = self._world.plant.GetPositions(self._context()).copy()
+        q[item.position_start()] = float(position)
+        self._world.plant.SetPositions(self._context(), q)
+
+    def set_joint_velocity(self, joint: str, velocity: float) -> None:
+        """Set a 1-dof joint's velocity now (Gazebo's ``Joint::SetVelocity``)."""
+        item = self._world.joint(self.name, joint)
+        v = self._world.plant.GetVelocities(self._context()).copy()
+        v[item.velocity_start()] = float(velocity)
+        self._world.plant.SetVelocities(self._context(), v)
+
+    def set_joint_effort(self, joint: str, effort: float) -> None:
+        """Apply a torque (N m) or force (N) on a 1-dof joint until this plugin's next update."""
+        if not np.isfinite(effort):
+            raise SimulationError(f"joint '{joint}' of '{self.name}': effort is not finite")
+        self._world.joint(self.name, joint)  # checks the name
+        self._server.set_plugin_effort(self._owner, (self.name, joint), float(effort))
+
+    def apply_wrench(
+        self, link: str, force: Sequence[float], torque: Sequence[float] = (0.0, 0.0, 0.0)
+    ) -> None:
+        """Push a link at its origin with ``force`` and ``torque`` in W until this plugin's next update."""
+        self._world.body(f"{self.name}::{link}")  # checks the name
+        self._server.set_plugin_wrench(self._owner, f"{self.name}::{link}", force, torque)
+
+
+class WorldHandle:
+    """The running world, for world plugins."""
+
+    def __init__(self, server: SimServer, owner: Any = None) -> None:
+        self._server = server
+        self._owner = owner
+
+    @property
+    def sim_time(self) -> float:
+        """Simulated time, s."""
+        return self._server.world.time
+
+    def model_names(self) -> list[str]:
+        """Every model in the world."""
+        return self._server.world.model_names()
+
+    def model(self, name: str) -> ModelHandle:
+        """A handle on model ``name``."""
+        self._server.world.model_instance(name)  # checks the name
+        return ModelHandle(self._server, name, self._owner)
+
+    @property
+    def paused(self) -> bool:
+        return self._server.paused

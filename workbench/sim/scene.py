@@ -1,0 +1,174 @@
+"""Putting things into a World's Drake plant: the ground, static obstacles and Gazebo-style models.
+
+These are the steps :class:`workbench.sim.World` replays each time it (re)builds
+its diagram, so they take the plant and what to add, and keep no state.
+"""
+
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from workbench.errors import SimulationError
+from workbench.sim.model_spec import SimModel
+from workbench.spatial import rigid_transform
+
+GROUND_NAME = "ground_plane"
+GROUND_FRICTION = 1.0
+GROUND_SIZE = 100.0
+
+_LOG = logging.getLogger("workbench.sim")
+
+
+@dataclass
+class PlacedModel:
+    """A Gazebo-style model in the world: what it is and where it was put.
+
+    Attributes:
+        model: The parsed-ready model.
+        X_WM: Where the model frame was placed (spawn pose), a RigidTransform.
+        joint_positions: Initial joint positions by joint name (``-J``), rad or m.
+        instance: The model instance in the current plant.
+        initial_X_WM: The pose the model was spawned at (``reset_world`` returns there).
+        X_MR: Pose of the model's root link in its model frame (set when parsed).
+    """
+
+    model: SimModel
+    X_WM: Any
+    joint_positions: dict[str, float] = field(default_factory=dict)
+    instance: Any = None
+    initial_X_WM: Any = None
+    X_MR: Any = None
+
+
+def add_ground(plant: Any, z: float) -> None:
+    """A ground slab whose top is the plane ``z`` (Gazebo's ``ground_plane`` is 100 m x 100 m)."""
+    # A thick box rather than a HalfSpace: same contact for point contact, and
+    # Drake's deformable-contact warning about half spaces stays quiet.
+    from pydrake.geometry import Box
+    from pydrake.multibody.plant import CoulombFriction
+
+    world = plant.world_body()
+    plant.RegisterCollisionGeometry(
+        world,
+        rigid_transform([0.0, 0.0, z - 0.5]),
+        Box(GROUND_SIZE, GROUND_SIZE, 1.0),
+        GROUND_NAME,
+        CoulombFriction(GROUND_FRICTION, GROUND_FRICTION),
+    )
+    plant.RegisterVisualGeometry(
+        world,
+        rigid_transform([0.0, 0.0, z - 0.005]),
+        Box(GROUND_SIZE, GROUND_SIZE, 0.01),
+        GROUND_NAME,
+        np.array([0.8, 0.8, 0.8, 1.0]),
+    )
+
+
+def add_obstacle(plant: Any, name: str, shape: Any, X_WB: Any, rgba: Any) -> None:
+    """A static shape welded to the world, with collision and visual geometry."""
+    from pydrake.multibody.plant import CoulombFriction
+
+    world = plant.world_body()
+    plant.RegisterCollisionGeometry(world, X_WB, shape, name, CoulombFriction(0.8, 0.6))
+    color = np.array(rgba if rgba is not None else [0.55, 0.45, 0.35, 1.0], dtype=float)
+    plant.RegisterVisualGeometry(world, X_WB, shape, name, color)
+
+
+def add_placed_model(plant: Any, placed: PlacedModel) -> Any:
+    """Parse ``placed.model`` into ``plant`` and put it at ``placed.X_WM``.
+
+    Root bodies (those no joint of the model moves) are free bodies placed at
+    ``X_WM * X_MB``, or welded there when the model is static. ``-J`` joint
+    positions become the joints' default positions.
+
+    Returns:
+        The model instance.
+
+    Raises:
+        SimulationError: Drake refused the model, or a ``-J`` joint does not exist.
+    """
+    from pydrake.multibody.parsing import Parser
+
+    model = placed.model
+    parser = Parser(plant)
+    for package, folder in model.package_map.items():
+        if not parser.package_map().Contains(package):
+            parser.package_map().Add(package, folder)
+    drake_log = logging.getLogger("drake")
+    level = drake_log.level
+    drake_log.setLevel(logging.ERROR)  # what Drake would warn about was fixed and reported already
+    try:
+        instances = parser.AddModelsFromString(model.text, model.format)
+    except RuntimeError as error:
+        first = next((line for line in str(error).splitlines() if line.strip()), "")
+        raise SimulationError(
+            f"model '{model.name}' ({model.source or model.format}): Drake cannot load it: {first}"
+        ) from None
+    finally:
+        drake_log.setLevel(level)
+    if not instances:
+        raise SimulationError(f"model '{model.name}' ({model.source}) defines no model")
+    instance = instances[0]
+    X_pose = rigid_transform(model.pose[:3], rpy=model.pose[3:])
+    X_WM = placed.X_WM.multiply(X_pose)
+    roots = root_bodies(plant, instance)
+    canonical = next((b for b in roots if b.name() == model.root_link), roots[0] if roots else None)
+    for body in roots:
+        X_MB = plant.GetDefaultFloatingBaseBodyPose(body)
+        if canonical is not None and body.index() == canonical.index():
+            placed.X_MR = X_MB
+        X_WB = X_WM.multiply(X_MB)
+        if model.static:
+            plant.WeldFrames(plant.world_frame(), body.body_frame(), X_WB)
+        else:
+            plant.SetDefaultFloatingBaseBodyPose(body, X_WB)
+    for joint_name, value in placed.joint_positions.items():
+        if not plant.HasJointNamed(joint_name, instance):
+            raise SimulationError(
+                f"model '{model.name}' has no joint '{joint_name}'",
+                hint="joints: " + ", ".join(joint_names(plant, instance)),
+            )
+        joint = plant.GetJointByName(joint_name, instance)
+        if joint.num_positions() != 1:
+            raise SimulationError(f"joint '{joint_name}' of '{model.name}' is not a 1-dof joint")
+        joint.set_default_positions(np.array([float(value)]))
+    if not model.gravity:
+        plant.set_gravity_enabled(instance, False)
+    placed.instance = instance
+    return instance
+
+
+def filter_self_collisions(plant: Any, scene_graph: Any, instance: Any) -> None:
+    """Stop a model's links colliding with each other (Gazebo's default, ``selfCollide`` off)."""
+    from pydrake.geometry import CollisionFilterDeclaration
+
+    bodies = [plant.get_body(index) for index in plant.GetBodyIndices(instance)]
+    if len(bodies) < 2:
+        return
+    geometries = plant.CollectRegisteredGeometries(bodies)
+    scene_graph.collision_filter_manager().Apply(
+        CollisionFilterDeclaration().ExcludeWithin(geometries)
+    )
+
+
+def root_bodies(plant: Any, instance: Any) -> list[Any]:
+    """The bodies of ``instance`` that no joint moves (the model's free or welded roots)."""
+    moved = {plant.get_joint(j).child_body().index() for j in plant.GetJointIndices(instance)}
+    return [plant.get_body(index) for index in plant.GetBodyIndices(instance) if index not in moved]
+
+
+def joint_names(plant: Any, instance: Any) -> list[str]:
+    """Names of the joints of ``instance`` that have positions (free-body joints excluded)."""
+    names = []
+    for index in plant.GetJointIndices(instance):
+        joint = plant.get_joint(index)
+        if joint.num_positions() and joint.type_name() not in (
+            "quaternion_floating",
+            "rpy_floating",
+        ):
+            names.append(joint.name())
+    return names

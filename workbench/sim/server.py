@@ -1,0 +1,535 @@
+"""The simulation server: one World stepped in a loop, Gazebo's ``gzserver``.
+
+:class:`SimServer` owns a built :class:`~workbench.sim.World` and advances it,
+paced to a real-time factor (or as fast as it can), pausable. Everything that
+changes the world — spawning, deleting, moving models, applying wrenches, plugin
+updates — runs on the loop's thread between physics steps: other threads hand
+work over with :meth:`SimServer.call`. Hooks run after each advance (the Gazebo
+ROS API publishes ``/clock`` and the model states from one; the live view
+draws from another).
+
+Example::
+
+    world = World(**SERVER_PHYSICS)
+    server = SimServer(world)
+    server.spawn(load_sim_model("simple_box"), [0, 0, 1])
+    server.run(until=2.0)
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import queue
+import threading
+import time
+from collections.abc import Callable, Mapping, Sequence
+from concurrent.futures import Future
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from workbench.errors import SimulationError
+from workbench.sim.model_spec import PluginSpec, SimModel
+from workbench.sim.plugins import (
+    Plugin,
+    SdfElement,
+    UpdateInfo,
+    WorldPlugin,
+    describe_failure,
+    load_plugin_class,
+)
+
+_LOG = logging.getLogger("workbench.sim")
+
+#: Physics of the server: Gazebo's 1 ms step; Drake's default (lagged) discrete
+#: contact solver with point contact, as robust as Drake offers; friction 1.0,
+#: SDF's default ``<mu>``.
+SERVER_PHYSICS: dict[str, Any] = {
+    "time_step": 0.001,
+    "physics": {
+        "contact_model": "point",
+        "discrete_contact_approximation": "lagged",
+        "dynamic_friction": 1.0,
+        "static_friction": 1.0,
+    },
+}
+
+
+@dataclass
+class _PluginSlot:
+    plugin: Plugin
+    spec: PluginSpec
+    model: str | None
+    period: float
+    next_update: float = 0.0
+    last_update: float | None = None
+    node: Any = None
+    efforts: dict[tuple[str, str], float] = field(default_factory=dict)
+    wrenches: list[tuple[Any, Any, Any]] = field(default_factory=list)
+
+
+@dataclass
+class _Job:
+    """A wrench or effort the Gazebo API applies for a while (start and end in sim time)."""
+
+    start: float
+    end: float
+    body: Any = None
+    force: Any = None
+    torque: Any = None
+    joint: tuple[str, str] | None = None
+    effort: float = 0.0
+
+
+class SimServer:
+    """Step a World in a loop and serialise every change to it.
+
+    Args:
+        world: The world; built here if it is not (with ``meshcat`` if given).
+        bus: A ``workbench.bus.Bus`` for plugins' nodes (None: plugins get no node).
+        paused: Start paused (Gazebo's ``-u``).
+        real_time_factor: Target sim/wall speed ratio; ``0`` or ``inf``: as fast as possible.
+        chunk: Simulated time advanced between hooks when nothing needs finer steps, s.
+    """
+
+    def __init__(
+        self,
+        world: Any,
+        *,
+        bus: Any = None,
+        paused: bool = False,
+        real_time_factor: float = 1.0,
+        chunk: float = 0.01,
+        meshcat: Any = None,
+    ) -> None:
+        if not (real_time_factor >= 0):
+            raise SimulationError(f"real_time_factor must be >= 0, got {real_time_factor}")
+        self.world = world
+        self.bus = bus
+        world.build(meshcat)
+        self.paused = paused
+        self.real_time_factor = float(real_time_factor)
+        self.chunk = float(chunk)
+        self.hooks: list[Callable[[SimServer], None]] = []
+        self.measured_rtf = 0.0
+        self.error: str | None = None
+        self._jobs: queue.SimpleQueue[tuple[Callable[[], Any], Future[Any]]] = queue.SimpleQueue()
+        self._wake = threading.Event()
+        self._stop = threading.Event()
+        self._loop_thread: threading.Thread | None = None
+        self._running_in: int | None = None
+        self._plugins: list[_PluginSlot] = []
+        self._api_jobs: list[_Job] = []
+        self._pace_reset = True
+        self._step_request = 0.0
+
+    # --- threading -------------------------------------------------------------------
+
+    def call(self, fn: Callable[[], Any], timeout: float | None = 60.0) -> Any:
+        """Run ``fn()`` on the loop's thread between steps and return its result.
+
+        Called from the loop's own thread, or when no loop runs, ``fn`` runs at once.
+        """
+        if self._running_in is None or self._running_in == threading.get_ident():
+            return fn()
+        future: Future[Any] = Future()
+        self._jobs.put((fn, future))
+        self._wake.set()
+        return future.result(timeout=timeout)
+
+    def start(self, until: float | None = None) -> None:
+        """Run the loop in a background thread (see :meth:`run`)."""
+        if self._loop_thread is not None:
+            return
+        ready = threading.Event()
+
+        def target() -> None:
+            ready.set()
+            self.run(until=until)
+
+        self._loop_thread = threading.Thread(target=target, name="sim-loop", daemon=True)
+        self._loop_thread.start()
+        ready.wait()
+        while self._running_in is None and self._loop_thread.is_alive():
+            time.sleep(0.001)
+
+    def stop(self) -> None:
+        """Stop the loop (and wait for a background one); plugins are closed."""
+        self._stop.set()
+        self._wake.set()
+        if self._loop_thread is not None and self._loop_thread is not threading.current_thread():
+            self._loop_thread.join(timeout=30)
+            self._loop_thread = None
+        for slot in list(self._plugins):
+            self._close_plugin(slot)
+        self._plugins.clear()
+
+    @property
+    def running(self) -> bool:
+        return self._running_in is not None
+
+    def run(self, until: float | None = None, stop: threading.Event | None = None) -> None:
+        """Step the world until ``until`` (sim s), :meth:`stop`, ``stop`` is set, or Ctrl-C."""
+        self._running_in = threading.get_ident()
+        self._stop.clear()
+        try:
+            while not self._stop.is_set() and not (stop is not None and stop.is_set()):
+                self._run_jobs()
+                if until is not None and self.world.time >= until - 1e-9:
+                    break
+                if self.paused and self._step_request <= 0:
+                    self._wake.wait(0.05)
+                    self._wake.clear()
+                    self._pace_reset = True
+                    for hook in self.hooks:
+                        hook(self)
+                    continue
+                self.step_once(until)
+        finally:
+            self._run_jobs()
+            self._running_in = None
+
+    # --- stepping --------------------------------------------------------------------
+
+    def step_once(self, until: float | None = None) -> None:
+        """Advance by one chunk: plugins, physics, timed wrenches, hooks, pacing."""
+        world = self.world
+        t = world.time
+        target = t + self._next_chunk(t)
+        if until is not None:
+            target = min(target, until)
+        if self._step_request > 0:
+            target = min(target, t + self._step_request)
+        self._update_plugins(t)
+        self._apply_jobs(t)
+        try:
+            world.advance_to(target)
+        except SimulationError as error:
+            self._blow_up(str(error.message))
+            return
+        if not world.state_is_finite():
+            self._blow_up(f"the state became NaN at t={world.time:.4f} s")
+            return
+        if self._step_request > 0:
+            self._step_request = max(0.0, self._step_request - (world.time - t))
+        for hook in self.hooks:
+            hook(self)
+        self._pace(world.time - t)
+
+    def request_step(self, seconds: float) -> None:
+        """Advance ``seconds`` of simulated time while paused (the view's Step button)."""
+        self._step_request += max(0.0, float(seconds))
+        self._wake.set()
+
+    def _next_chunk(self, t: float) -> float:
+        chunk = self.chunk
+        step = self.world.time_step
+        for slot in self._plugins:
+            due = step if slot.period <= 0 else max(slot.next_update - t, 0.5 * step)
+            chunk = min(chunk, due)
+        for job in self._api_jobs:
+            for edge in (job.start, job.end):
+                if edge > t + 1e-9:
+                    chunk = min(chunk, edge - t)
+        return max(chunk, self.world.time_step)
+
+    def _pace(self, advanced: float) -> None:
+        now = time.perf_counter()
+        if self._pace_reset:
+            self._wall0, self._sim0 = now, self.world.time - advanced
+            self._rtf_wall, self._rtf_sim = now, self.world.time
+            self._pace_reset = False
+        if now - self._rtf_wall >= 1.0:
+            self.measured_rtf = (self.world.time - self._rtf_sim) / (now - self._rtf_wall)
+            self._rtf_wall, self._rtf_sim = now, self.world.time
+        rtf = self.real_time_factor
+        if rtf <= 0 or math.isinf(rtf):
+            return
+        ahead = (self.world.time - self._sim0) / rtf - (now - self._wall0)
+        if ahead > 0:
+            self._wake.wait(min(ahead, 0.1))
+            self._wake.clear()
+        elif ahead < -0.5:  # far behind: do not try to catch up in a burst
+            self._pace_reset = True
+
+    def _blow_up(self, why: str) -> None:
+        self.error = why
+        self.paused = True
+        _LOG.error(
+            "simulation stopped: %s; paused (reset with /gazebo/reset_world or delete the model)",
+            why,
+        )
+
+    def _run_jobs(self) -> None:
+        while True:
+            try:
+                fn, future = self._jobs.get_nowait()
+            except queue.Empty:
+                return
+            if not future.set_running_or_notify_cancel():
+                continue
+            try:
+                future.set_result(fn())
+            except BaseException as error:  # noqa: BLE001 - handed back to the caller
+                future.set_exception(error)
+
+    # --- models ----------------------------------------------------------------------
+
+    def spawn(
+        self,
+        model: SimModel,
+        X_WM: Any = None,
+        *,
+        joint_positions: Mapping[str, float] | None = None,
+    ) -> None:
+        """Add ``model`` (with its plugins) at ``X_WM``; the running world keeps going."""
+
+        def work() -> None:
+            self.world.add_model(model, X_WM, joint_positions=joint_positions)
+            for warning in model.warnings:
+                _LOG.warning("%s", warning)
+            self._after_rebuild()
+            for spec in model.plugins:
+                if spec.kind == "sensor" and spec.filename.startswith("lib"):
+                    continue  # sensors come with the next simulator release
+                self.load_plugin(spec, model.name)
+
+        self.call(work)
+
+    def delete(self, name: str) -> None:
+        """Remove a model and its plugins."""
+
+        def work() -> None:
+            self.world.remove_model(name)
+            for slot in [s for s in self._plugins if s.model == name]:
+                self._close_plugin(slot)
+                self._plugins.remove(slot)
+            self._api_jobs = [j for j in self._api_jobs if not _belongs(j, name)]
+            self._after_rebuild()
+
+        self.call(work)
+
+    def reset(self, *, time_too: bool) -> None:
+        """Models back to their spawn poses (``time_too``: the clock back to 0 too)."""
+
+        def work() -> None:
+            self.world.reset(time=time_too)
+            self._api_jobs.clear()
+            self.error = None
+            for slot in self._plugins:
+                slot.next_update = self.world.time
+                slot.last_update = None
+                try:
+                    slot.plugin.reset()
+                except Exception as error:  # noqa: BLE001 - a plugin's failure
+                    self._disable(slot, error, "reset")
+            self._after_rebuild()
+
+        self.call(work)
+
+    def _after_rebuild(self) -> None:
+        self._pace_reset = True
+        self._push_forces()
+
+    # --- plugins ---------------------------------------------------------------------
+
+    def load_plugin(self, spec: PluginSpec, model: str | None = None) -> Plugin | None:
+        """Load and start a plugin; failures are logged (file and line) and the plugin skipped."""
+        try:
+            cls = load_plugin_class(spec)
+        except SimulationError as error:
+            _LOG.error("%s", error)
+            return None
+        plugin = cls()
+        sdf = SdfElement(spec.element)
+        rate = sdf.get("update_rate", float(getattr(plugin, "update_rate", 0.0) or 0.0))
+        period = 1.0 / rate if rate and rate > 0 else 0.0
+        slot = _PluginSlot(plugin, spec, model, period, next_update=self.world.time)
+        if self.bus is not None:
+            from workbench.bus import Node
+
+            slot.node = Node(
+                f"gazebo_plugin_{spec.name or cls.__name__}", bus=self.bus, anonymous=True
+            )
+        from workbench.sim.handles import ModelHandle, WorldHandle
+
+        try:
+            if isinstance(plugin, WorldPlugin):
+                plugin.load(WorldHandle(self, slot), sdf, slot.node)
+            else:
+                if model is None:
+                    raise SimulationError(
+                        f"plugin '{spec.name}' is a model plugin but was given no model",
+                        hint="attach it in a <model> or URDF <gazebo> block, or --plugin MODEL=FILE",
+                    )
+                plugin.load(ModelHandle(self, model, slot), sdf, slot.node)  # type: ignore[attr-defined]
+        except Exception as error:  # noqa: BLE001 - a plugin's failure
+            self._disable(slot, error, "load")
+            return None
+        self._plugins.append(slot)
+        _LOG.info("loaded plugin '%s' (%s)", spec.name, spec.filename)
+        return plugin
+
+    @property
+    def plugins(self) -> list[Plugin]:
+        """The running plugins."""
+        return [slot.plugin for slot in self._plugins]
+
+    def set_plugin_effort(self, owner: Any, key: tuple[str, str], effort: float) -> None:
+        """Set a joint effort ``{(model, joint): effort}`` until ``owner``'s next update."""
+        owner.efforts[key] = effort
+        self._push_forces()
+
+    def set_plugin_wrench(self, owner: Any, body: str, force: Any, torque: Any) -> None:
+        """Add a wrench on ``body`` (scoped ``model::link``) until ``owner``'s next update."""
+        owner.wrenches.append((body, np.asarray(force, float), np.asarray(torque, float)))
+        self._push_forces()
+
+    def _update_plugins(self, t: float) -> None:
+        half_step = 0.5 * self.world.time_step
+        for slot in list(self._plugins):
+            if t < slot.next_update - half_step:
+                continue
+            dt = 0.0 if slot.last_update is None else t - slot.last_update
+            slot.efforts.clear()
+            slot.wrenches.clear()
+            try:
+                slot.plugin.update(UpdateInfo(t, dt))
+            except Exception as error:  # noqa: BLE001 - a plugin's failure
+                self._disable(slot, error, "update")
+                continue
+            slot.last_update = t
+            slot.next_update = t + (slot.period or self.world.time_step)
+
+    def _disable(self, slot: _PluginSlot, error: BaseException, during: str) -> None:
+        where = describe_failure(error, slot.plugin)
+        _LOG.error("plugin '%s' failed in %s and is disabled: %s", slot.spec.name, during, where)
+        if slot in self._plugins:
+            self._plugins.remove(slot)
+        self._close_plugin(slot)
+        self._push_forces()
+
+    def _close_plugin(self, slot: _PluginSlot) -> None:
+        try:
+            slot.plugin.close()
+        except Exception as error:  # noqa: BLE001 - a plugin's failure
+            _LOG.warning("plugin '%s' failed while closing: %s", slot.spec.name, error)
+        if slot.node is not None:
+            slot.node.shutdown()
+            slot.node = None
+
+    # --- forces from the API and plugins ---------------------------------------------
+
+    def apply_body_wrench(
+        self,
+        body_name: str,
+        force: Sequence[float],
+        torque: Sequence[float],
+        start: float,
+        duration: float,
+    ) -> None:
+        """Apply a wrench (W, at the link origin) from ``start`` for ``duration`` s (< 0: forever)."""
+
+        def work() -> None:
+            body = self._scoped(body_name)
+            begin = max(start, self.world.time)
+            end = math.inf if duration < 0 else begin + duration
+            self._api_jobs.append(
+                _Job(
+                    begin,
+                    end,
+                    body=body,
+                    force=np.asarray(force, float),
+                    torque=np.asarray(torque, float),
+                )
+            )
+            self._push_forces()
+
+        self.call(work)
+
+    def apply_joint_effort(
+        self, joint_name: str, effort: float, start: float, duration: float
+    ) -> None:
+        """Apply ``effort`` on the joint named so in any model from ``start`` for ``duration`` s."""
+
+        def work() -> None:
+            owner = self._joint_owner(joint_name)
+            begin = max(start, self.world.time)
+            end = math.inf if duration < 0 else begin + duration
+            joint = joint_name.rpartition("::")[2]
+            self._api_jobs.append(_Job(begin, end, joint=(owner, joint), effort=float(effort)))
+            self._push_forces()
+
+        self.call(work)
+
+    def clear_jobs(self, *, body: str | None = None, joint: str | None = None) -> None:
+        """Drop the API's wrenches on ``body`` or efforts on ``joint`` (Gazebo's clear_* services)."""
+
+        def work() -> None:
+            def keep(job: _Job) -> bool:
+                if body is not None and job.body is not None:
+                    return job.body != body and job.body.rpartition("::")[2] != body
+                if joint is not None and job.joint is not None:
+                    return job.joint[1] != joint.rpartition("::")[2]
+                return True
+
+            self._api_jobs = [j for j in self._api_jobs if keep(j)]
+            self._push_forces()
+
+        self.call(work)
+
+    def wake(self) -> None:
+        """Make a waiting loop look at its state now (after unpausing)."""
+        self._pace_reset = True
+        self._wake.set()
+
+    def _scoped(self, body_name: str) -> str:
+        body = self.world.body(body_name)
+        instance_name = self.world.plant.GetModelInstanceName(body.model_instance())
+        return f"{instance_name}::{body.name()}"
+
+    def _joint_owner(self, joint_name: str) -> str:
+        plant = self.world.plant
+        model, _, joint = joint_name.rpartition("::")
+        names = [model] if model else [n for n in self.world.model_names() if n != "ground_plane"]
+        for name in names:
+            if plant.HasJointNamed(joint or joint_name, self.world.model_instance(name)):
+                return name
+        raise SimulationError(f"joint '{joint_name}' not found")
+
+    def _apply_jobs(self, t: float) -> None:
+        before = len(self._api_jobs)
+        self._api_jobs = [j for j in self._api_jobs if j.end > t + 1e-12]
+        if len(self._api_jobs) != before or any(abs(j.start - t) < 1e-9 for j in self._api_jobs):
+            self._push_forces()
+
+    def _push_forces(self) -> None:
+        t = self.world.time
+        wrenches: list[tuple[Any, Any, Any]] = []
+        efforts: dict[tuple[str, str], float] = {}
+        for job in self._api_jobs:
+            if not (job.start <= t + 1e-9 < job.end):
+                continue
+            if job.body is not None:
+                wrenches.append((job.body, job.force, job.torque))
+            elif job.joint is not None:
+                efforts[job.joint] = efforts.get(job.joint, 0.0) + job.effort
+        for slot in self._plugins:
+            wrenches += slot.wrenches
+            for key, value in slot.efforts.items():
+                efforts[key] = efforts.get(key, 0.0) + value
+        names = set(self.world.model_names())
+        resolved = []
+        for scoped, force, torque in wrenches:
+            if scoped.rpartition("::")[0] in names:
+                resolved.append((self.world.body(scoped), force, torque))
+        self.world.set_body_wrenches(resolved)
+        self.world.set_joint_efforts({k: v for k, v in efforts.items() if k[0] in names})
+
+
+def _belongs(job: _Job, model: str) -> bool:
+    if job.joint is not None:
+        return job.joint[0] == model
+    return str(job.body).rpartition("::")[0] == model
