@@ -43,17 +43,14 @@ from workbench.sim.plugins import (
 
 _LOG = logging.getLogger("workbench.sim")
 
-#: Physics of the server: Gazebo's 1 ms step; Drake's default (lagged) discrete
-#: contact solver with point contact, as robust as Drake offers; friction 1.0,
-#: SDF's default ``<mu>``.
+#: Physics of the server: Gazebo's 1 ms step (a world's ``<max_step_size>``
+#: overrides it); point contact (Gazebo's kind; no hydroelastic properties to
+#: write) with Drake's default "lagged" discrete solver (convex, stable at this
+#: step; TAMSI is deprecated). Friction is 1.0 unless a model says otherwise
+#: (Drake's parser default, and SDF's default ``<mu>``); the ground plane too.
 SERVER_PHYSICS: dict[str, Any] = {
     "time_step": 0.001,
-    "physics": {
-        "contact_model": "point",
-        "discrete_contact_approximation": "lagged",
-        "dynamic_friction": 1.0,
-        "static_friction": 1.0,
-    },
+    "physics": {"contact_model": "point", "discrete_contact_approximation": "lagged"},
 }
 
 
