@@ -1,0 +1,211 @@
+"""An SDF ``<model>`` as Gazebo reads it, turned into a :class:`SimModel`.
+
+The model gets its world name; its own ``<pose>`` is lifted into
+``SimModel.pose`` (the world composes placement and pose, as gazebo_ros's
+spawner does); ``<static>`` and ``<self_collide>`` become fields (the simulator
+welds a static model where it is put); ``<gravity>false</gravity>`` on every
+link switches gravity off for the model; ``<plugin>`` and ``<sensor>`` elements
+are lifted out; ``model://NAME/...`` and relative mesh URIs become absolute
+files Drake can read. Drake reads the rest of SDFormat itself, including
+``<surface><friction><ode><mu>``. Inertias that break the triangle inequality
+are fixed with a warning, as in URDF (:mod:`workbench.sim.inertia`).
+"""
+
+from __future__ import annotations
+
+import copy
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from lxml import etree
+
+from workbench.errors import SimulationError
+from workbench.sim.inertia import describe, inertia_matrix, valid_inertia
+from workbench.sim.model_spec import PluginSpec, SimModel
+
+
+def sim_model_from_sdf(
+    text: str, *, name: str | None, source: str, base_dir: Path | None = None
+) -> SimModel:
+    """The :class:`SimModel` of an SDF file with one ``<model>`` (or a bare ``<model>``).
+
+    Raises:
+        SimulationError: Not XML, no ``<model>``, a model without links, a nested
+            ``<include>``, a mesh that cannot be found.
+    """
+    try:
+        root = etree.fromstring(text.strip().encode())
+    except etree.XMLSyntaxError as error:
+        raise SimulationError(f"{source}: not valid XML: {error}") from None
+    model_element = root if root.tag == "model" else root.find("model")
+    if model_element is None:
+        what = "a world, not a model" if root.find("world") is not None else "no <model>"
+        raise SimulationError(f"{source}: the SDF has {what}", hint="spawn an SDF <model>")
+    model_element = copy.deepcopy(model_element)
+    return sim_model_from_element(
+        model_element, name=name, source=source, base_dir=base_dir, version=root.get("version")
+    )
+
+
+def sim_model_from_element(
+    model_element: Any,
+    *,
+    name: str | None,
+    source: str,
+    base_dir: Path | None,
+    version: str | None = None,
+) -> SimModel:
+    """:func:`sim_model_from_sdf` for a parsed ``<model>`` element (changed in place)."""
+    where = f"{source}:{model_element.sourceline}" if model_element.sourceline else source
+    links = model_element.findall("link")
+    if not links:
+        raise SimulationError(f"{where}: model '{model_element.get('name')}' has no <link>")
+    if model_element.find("include") is not None or model_element.find("model") is not None:
+        raise SimulationError(
+            f"{where}: nested models (<include>/<model> inside a <model>) are not supported",
+            hint="put the models side by side in the world",
+        )
+    if name:
+        model_element.set("name", name)
+    model = SimModel(
+        name=model_element.get("name", ""),
+        format="sdf",
+        text="",
+        root_link=model_element.get("canonical_link") or links[0].get("name"),
+        source=source,
+    )
+    pose = model_element.find("pose")
+    if pose is not None:
+        model.pose = _pose(pose, where)
+        model_element.remove(pose)
+    for tag in ("static", "self_collide"):
+        element = model_element.find(tag)
+        if element is not None:
+            setattr(model, "static" if tag == "static" else "self_collide", _truth(element.text))
+            model_element.remove(element)
+    for plugin in model_element.findall("plugin"):
+        model.plugins.append(_plugin(plugin, "model", None, base_dir, source))
+        model_element.remove(plugin)
+    gravity_off = []
+    for link in links:
+        for sensor in link.findall("sensor"):
+            for plugin in sensor.iter("plugin"):
+                model.plugins.append(_plugin(plugin, "sensor", link.get("name"), base_dir, source))
+            model.sensors.append((link.get("name", ""), _xml(sensor)))
+            link.remove(sensor)
+        gravity = link.find("gravity")
+        if gravity is not None:
+            if not _truth(gravity.text):
+                gravity_off.append(link.get("name"))
+            link.remove(gravity)
+        if not model.static:
+            _fix_inertia(link, model, where)
+    if gravity_off and len(gravity_off) == len(links):
+        model.gravity = False
+    elif gravity_off:
+        model.warnings.append(
+            f"{where}: <gravity>false</gravity> on links {', '.join(gravity_off)} only; "
+            "workbench switches gravity per model, so it stays on"
+        )
+    _absolute_uris(model_element, base_dir, where)
+    sdf = etree.Element("sdf", version=version or "1.7")
+    sdf.append(model_element)
+    model.text = etree.tostring(sdf, encoding="unicode")
+    return model
+
+
+def _absolute_uris(model_element: Any, base_dir: Path | None, where: str) -> None:
+    from workbench.model.meshes import prepare_mesh
+    from workbench.sim.model_paths import find_model_dir
+
+    for uri in model_element.iter("uri"):
+        value = (uri.text or "").strip()
+        if not value or value.startswith("package://"):
+            continue
+        if value.startswith("model://"):
+            model_name, _, rest = value[len("model://") :].partition("/")
+            folder = find_model_dir(model_name)
+            if folder is None:
+                raise SimulationError(
+                    f"{where}: cannot resolve {value}: no model '{model_name}'",
+                    hint="add its folder's parent to GAZEBO_MODEL_PATH",
+                )
+            path = folder / rest
+        elif value.startswith("file://"):
+            path = Path(value[len("file://") :])
+        else:
+            path = Path(value)
+            if not path.is_absolute():
+                path = (base_dir or Path.cwd()) / path
+        if uri.getparent() is not None and uri.getparent().tag == "mesh":
+            path = prepare_mesh(path, where=None, line=uri.sourceline)
+        uri.text = str(path)
+
+
+def _fix_inertia(link: Any, model: SimModel, where: str) -> None:
+    inertia = link.find("inertial/inertia")
+    if inertia is None:
+        return
+    keys = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
+    defaults = {"ixx": 1.0, "iyy": 1.0, "izz": 1.0}
+    values = []
+    for key in keys:
+        element = inertia.find(key)
+        try:
+            values.append(float(element.text) if element is not None else defaults.get(key, 0.0))
+        except (TypeError, ValueError):
+            return  # Drake reports malformed numbers itself
+    matrix = inertia_matrix(*values)
+    try:
+        fixed = valid_inertia(matrix)
+    except ValueError:
+        return
+    if fixed is None:
+        return
+    model.warnings.append(
+        f"{where}: link '{link.get('name')}': inertia {describe(matrix)} breaks the triangle "
+        f"inequality (no real body has it; Drake refuses it); using {describe(fixed)}"
+    )
+    for key, (i, j) in zip(keys, ((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)), strict=True):
+        element = inertia.find(key)
+        if element is None:
+            element = etree.SubElement(inertia, key)
+        element.text = f"{fixed[i, j]:.12g}"
+
+
+def _pose(element: Any, where: str) -> tuple[float, float, float, float, float, float]:
+    try:
+        values = [float(v) for v in (element.text or "").split()]
+    except ValueError:
+        values = []
+    if len(values) != 6 or not np.all(np.isfinite(values)):
+        raise SimulationError(
+            f"{where}: <pose> must be six finite numbers 'x y z roll pitch yaw', got "
+            f"'{(element.text or '').strip()}'"
+        )
+    return (values[0], values[1], values[2], values[3], values[4], values[5])
+
+
+def _plugin(
+    element: Any, kind: str, reference: str | None, base_dir: Path | None, source: str
+) -> PluginSpec:
+    return PluginSpec(
+        name=element.get("name", ""),
+        filename=element.get("filename", ""),
+        element=_xml(element),
+        kind=kind,
+        reference=reference,
+        base_dir=base_dir,
+        source=f"{source}:{element.sourceline}" if element.sourceline else source,
+    )
+
+
+def _xml(element: Any) -> str:
+    clone = copy.deepcopy(element)
+    clone.tail = None
+    return etree.tostring(clone, encoding="unicode")
+
+
+def _truth(text: str | None) -> bool:
+    return (text or "").strip().lower() in ("1", "true", "yes", "on")

@@ -1,0 +1,57 @@
+"""Inertias Gazebo accepts and Drake refuses, made valid with the smallest change.
+
+Gazebo's ODE simulates an inertia whose principal moments break the triangle
+inequality (the manual's simple_box: ixx = izz = 1, iyy = 100); no physical
+body has one, and Drake refuses it. The two smaller principal moments are
+raised by the same amount until the smaller two add up to the largest, which
+keeps the largest moment and the principal axes.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+#: SDFormat's default ``<inertial>``: what Gazebo gives a link that declares none.
+DEFAULT_MASS = 1.0
+DEFAULT_MOMENT = 1.0
+_SLACK = 1e-9
+
+
+def inertia_matrix(
+    ixx: float, iyy: float, izz: float, ixy: float, ixz: float, iyz: float
+) -> np.ndarray:
+    """The symmetric 3x3 inertia matrix, kg m^2."""
+    return np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]], dtype=float)
+
+
+def valid_inertia(matrix: np.ndarray) -> np.ndarray | None:
+    """A physically valid inertia close to ``matrix``, or None when it is valid already.
+
+    Raises:
+        ValueError: Entries that are not finite.
+    """
+    if not np.all(np.isfinite(matrix)):
+        raise ValueError("inertia entries must be finite")
+    symmetric = 0.5 * (matrix + matrix.T)
+    moments, axes = np.linalg.eigh(symmetric)
+    fixed = moments.copy()
+    if np.any(fixed < 0):
+        fixed = np.maximum(fixed, 0.0)
+    small, middle, large = fixed
+    deficit = large - (small + middle)
+    if deficit > _SLACK * max(large, 1e-12):
+        fixed[0] += deficit / 2 + _SLACK * large
+        fixed[1] += deficit / 2 + _SLACK * large
+    if np.allclose(fixed, moments, rtol=0, atol=_SLACK * max(abs(large), 1e-12)):
+        return None
+    return axes @ np.diag(fixed) @ axes.T
+
+
+def describe(matrix: np.ndarray) -> str:
+    """``ixx=… iyy=… izz=…`` (and the non-zero products) for messages."""
+    names = ("ixx", "iyy", "izz")
+    parts = [f"{n}={matrix[i, i]:.6g}" for i, n in enumerate(names)]
+    for (i, j), n in (((0, 1), "ixy"), ((0, 2), "ixz"), ((1, 2), "iyz")):
+        if abs(matrix[i, j]) > 1e-15:
+            parts.append(f"{n}={matrix[i, j]:.6g}")
+    return " ".join(parts)
