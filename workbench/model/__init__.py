@@ -18,6 +18,7 @@ from __future__ import annotations
 import os
 from typing import TYPE_CHECKING
 
+from workbench.model.builder import ModelBuilder
 from workbench.model.check import CheckReport, check_robot
 from workbench.model.description import RobotDescription, describe_robot
 from workbench.model.findings import Finding
@@ -46,6 +47,7 @@ __all__ = [
     "Finding",
     "JointInfo",
     "LinkInfo",
+    "ModelBuilder",
     "Robot",
     "RobotDescription",
     "as_robot",

@@ -24,6 +24,8 @@ from workbench.errors import SimulationError
 from workbench.sim.inertia import describe, inertia_matrix, valid_inertia
 from workbench.sim.model_spec import PluginSpec, SimModel
 
+DRAKE_NS = "http://drake.mit.edu"
+
 
 def sim_model_from_sdf(
     text: str, *, name: str | None, source: str, base_dir: Path | None = None
@@ -108,11 +110,54 @@ def sim_model_from_element(
             f"{where}: <gravity>false</gravity> on links {', '.join(gravity_off)} only; "
             "workbench switches gravity per model, so it stays on"
         )
+    _ball_casters(model_element, model, where)
     _absolute_uris(model_element, base_dir, where)
     sdf = etree.Element("sdf", version=version or "1.7")
     sdf.append(model_element)
     model.text = etree.tostring(sdf, encoding="unicode")
     return model
+
+
+def _ball_casters(model_element: Any, model: SimModel, where: str) -> None:
+    """Ball joints that carry a sphere caster become fixed, frictionless casters.
+
+    Drake's ball joint is a roll-pitch-yaw joint that stops the simulation at
+    pitch = pi/2, which a rolling caster reaches at once. A caster's job, carrying
+    weight without resisting motion, is done as well by a fixed sphere without
+    friction (what URDF robots do). Other ball joints are left alone.
+    """
+    parents = {j.findtext("parent") for j in model_element.findall("joint")}
+    for joint in model_element.findall("joint"):
+        if joint.get("type") != "ball":
+            continue
+        child_name = (joint.findtext("child") or "").strip()
+        child = next(
+            (lk for lk in model_element.findall("link") if lk.get("name") == child_name), None
+        )
+        collisions = child.findall("collision") if child is not None else []
+        spheres = [c for c in collisions if c.find("geometry/sphere") is not None]
+        if (
+            child is None
+            or child_name in parents
+            or not collisions
+            or len(spheres) != len(collisions)
+        ):
+            continue
+        joint.set("type", "fixed")
+        for axis in joint.findall("axis"):
+            joint.remove(axis)
+        for collision in collisions:
+            for old in collision.findall(f"{{{DRAKE_NS}}}proximity_properties"):
+                collision.remove(old)
+            properties = etree.SubElement(
+                collision, f"{{{DRAKE_NS}}}proximity_properties", nsmap={"drake": DRAKE_NS}
+            )
+            for key in ("mu_dynamic", "mu_static"):
+                etree.SubElement(properties, f"{{{DRAKE_NS}}}{key}").text = "0"
+        model.warnings.append(
+            f"{where}: ball joint '{joint.get('name')}' carries a sphere caster: simulated as a "
+            "fixed, frictionless caster (Drake's ball joint stops at pitch = pi/2)"
+        )
 
 
 def _absolute_uris(model_element: Any, base_dir: Path | None, where: str) -> None:
