@@ -304,7 +304,9 @@ class ModelBuilder:
         if kind == "revolute" and limits is None:
             lower, upper = -math.pi, math.pi
         if lower is not None and upper is not None and not lower <= upper:
-            raise ModelError(f"joint '{name}': lower limit {lower} is above upper limit {upper}")
+            raise ModelError(
+                f"joint '{name}': lower limit {lower:g} is above upper limit {upper:g}"
+            )
         if not (math.isfinite(damping) and damping >= 0):
             raise ModelError(f"joint '{name}': damping must be >= 0")
         self._joints[name] = _Joint(
@@ -423,6 +425,9 @@ class ModelBuilder:
         return points.min(axis=0), points.max(axis=0)
 
     def _check(self) -> None:
+        self._root()
+
+    def _root(self) -> str:
         if not self._links:
             raise ModelError(f"model '{self.name}' has no links")
         children = {j.child for j in self._joints.values()}
@@ -432,6 +437,7 @@ class ModelBuilder:
                 f"model '{self.name}' must have one root link, has {len(roots)}: {', '.join(roots)}",
                 hint="connect every other link with a joint",
             )
+        return roots[0]
 
     # --- output ----------------------------------------------------------------------
 
@@ -456,7 +462,7 @@ class ModelBuilder:
                     f"        <mass>{mass:.6g}</mass>",
                     "        <inertia>"
                     + "".join(
-                        f"<{k}>{inertia[i, j]:.6g}</{k}>"
+                        f"<{k}>{_number(inertia[i, j])}</{k}>"
                         for k, (i, j) in zip(
                             ("ixx", "iyy", "izz", "ixy", "ixz", "iyz"), _IJ, strict=True
                         )
@@ -521,17 +527,23 @@ class ModelBuilder:
         self._check()
         out = ['<?xml version="1.0"?>', f"<robot name={quoteattr(self.name)}>"]
         frictionless = []
+        # URDF has no link poses: the root link's frame is the model frame, so the
+        # root's own pose moves into its shapes and inertial.
+        root = self._root()
         for link in self._links.values():
+            X_FL = _matrix(link.pose) if link.name == root else np.eye(4)
             out.append(f"  <link name={quoteattr(link.name)}>")
             if link.mass is not None:
                 mass, com, inertia = self.inertial(link.name)
+                com = X_FL[:3, :3] @ com + X_FL[:3, 3]
+                inertia = X_FL[:3, :3] @ inertia @ X_FL[:3, :3].T
                 out += [
                     "    <inertial>",
                     f'      <origin xyz="{_fmt(com)}"/>',
                     f'      <mass value="{mass:.6g}"/>',
                     "      <inertia "
                     + " ".join(
-                        f'{k}="{inertia[i, j]:.6g}"'
+                        f'{k}="{_number(inertia[i, j])}"'
                         for k, (i, j) in zip(
                             ("ixx", "iyy", "izz", "ixy", "ixz", "iyz"), _IJ, strict=True
                         )
@@ -540,7 +552,8 @@ class ModelBuilder:
                     "    </inertial>",
                 ]
             for shape in link.shapes:
-                origin = f'<origin xyz="{_fmt(shape.pose[:3])}" rpy="{_fmt(shape.pose[3:])}"/>'
+                X = X_FL @ _matrix(shape.pose)
+                origin = f'<origin xyz="{_fmt(X[:3, 3])}" rpy="{_fmt(_rpy(X[:3, :3]))}"/>'
                 geometry = _urdf_geometry(shape)
                 if shape.visual:
                     out.append(f"    <visual>{origin}<geometry>{geometry}</geometry>")
@@ -557,7 +570,8 @@ class ModelBuilder:
             out.append("  </link>")
         for joint in self._joints.values():
             parent, child = self._links[joint.parent], self._links[joint.child]
-            X = np.linalg.inv(_matrix(parent.pose)) @ _matrix(child.pose)
+            X_MP = np.eye(4) if parent.name == root else _matrix(parent.pose)
+            X = np.linalg.inv(X_MP) @ _matrix(child.pose)
             xyz, rpy = X[:3, 3], _rpy(X[:3, :3])
             kind = "fixed" if joint.kind == "ball" else joint.kind
             if joint.kind == "ball":
@@ -660,6 +674,11 @@ def _rpy(R: np.ndarray) -> np.ndarray:
 
 def _fmt(values: Any) -> str:
     return " ".join(f"{0.0 if abs(v) < 1e-12 else float(v):.9g}" for v in values)
+
+
+def _number(value: float) -> str:
+    """A value for an inertia entry: 6 significant digits, round-off below 1e-12 as 0."""
+    return "0" if abs(value) < 1e-12 else f"{value:.6g}"
 
 
 def _value(value: Any) -> str:
