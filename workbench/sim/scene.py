@@ -54,18 +54,15 @@ def add_ground(plant: Any, z: float) -> None:
 
     world = plant.world_body()
     drake_log = logging.getLogger("drake")
-    level = drake_log.level
-    drake_log.setLevel(logging.ERROR)
-    try:
-        plant.RegisterCollisionGeometry(
-            world,
-            rigid_transform([0.0, 0.0, z]),
-            HalfSpace(),
-            GROUND_NAME,
-            CoulombFriction(GROUND_FRICTION, GROUND_FRICTION),
-        )
-    finally:
-        drake_log.setLevel(level)
+    if not any(isinstance(f, _HalfSpaceNotice) for f in drake_log.filters):
+        drake_log.addFilter(_HalfSpaceNotice())
+    plant.RegisterCollisionGeometry(
+        world,
+        rigid_transform([0.0, 0.0, z]),
+        HalfSpace(),
+        GROUND_NAME,
+        CoulombFriction(GROUND_FRICTION, GROUND_FRICTION),
+    )
     plant.RegisterVisualGeometry(
         world,
         rigid_transform([0.0, 0.0, z - 0.005]),
@@ -73,6 +70,13 @@ def add_ground(plant: Any, z: float) -> None:
         GROUND_NAME,
         np.array([0.8, 0.8, 0.8, 1.0]),
     )
+
+
+class _HalfSpaceNotice(logging.Filter):
+    """Drops Drake's notice that half spaces take no part in deformable contact."""
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        return "half spaces are not currently supported for deformable" not in record.getMessage()
 
 
 def add_obstacle(plant: Any, name: str, shape: Any, X_WB: Any, rgba: Any) -> None:
