@@ -54,7 +54,9 @@ def spinner_model(name: str) -> SimModel:
     return SimModel(name=name, format="urdf", text=text, root_link="base", source="test spinner")
 
 
-def plugin_spec(path: str, name: str = "test_plugin", body: str = "", kind: str = "model") -> PluginSpec:
+def plugin_spec(
+    path: str, name: str = "test_plugin", body: str = "", kind: str = "model"
+) -> PluginSpec:
     """A PluginSpec for the Python file ``path`` with parameter elements ``body``."""
     return PluginSpec(
         name=name,

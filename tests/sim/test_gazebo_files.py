@@ -33,8 +33,9 @@ def test_simple_box_loads_with_one_warning_that_names_the_inertia_fix(caplog):
     model = load_sim_model("simple_box", name="my_object")
     assert model.name == "my_object" and model.root_link == "my_box"
     assert len(model.warnings) == 1
-    assert "link 'my_box': inertia ixx=1 iyy=100 izz=1 breaks the triangle inequality" in (
-        model.warnings[0]
+    assert (
+        "link 'my_box': inertia ixx=1 iyy=100 izz=1 breaks the triangle inequality"
+        in (model.warnings[0])
     )
     assert "using ixx=50 iyy=100 izz=50" in model.warnings[0]
     assert "<gazebo" not in model.text
@@ -54,7 +55,9 @@ def test_gazebo_material_colours_reach_drakes_illustration(caplog):
     frame = world.plant.GetBodyFrameIdOrThrow(body.index())
     (geometry,) = inspector.GetGeometries(frame, Role.kIllustration)
     rgba = inspector.GetIllustrationProperties(geometry).GetProperty("phong", "diffuse")
-    np.testing.assert_allclose([rgba.r(), rgba.g(), rgba.b(), rgba.a()], GAZEBO_COLOURS["Gazebo/Blue"])
+    np.testing.assert_allclose(
+        [rgba.r(), rgba.g(), rgba.b(), rgba.a()], GAZEBO_COLOURS["Gazebo/Blue"]
+    )
 
 
 def test_mu_kp_kd_reach_drakes_proximity_properties(caplog):

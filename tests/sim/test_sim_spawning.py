@@ -39,9 +39,7 @@ def test_a_spawn_while_running_keeps_every_other_state_and_the_time():
     for name, state in before.items():
         np.testing.assert_array_equal(_state(world, name), state)
     assert world.model_names() == ["ground_plane", "falling", "spinner", "newcomer"]
-    np.testing.assert_allclose(
-        world.get_model_pose("newcomer").translation(), [-2.0, 0.0, 0.5]
-    )
+    np.testing.assert_allclose(world.get_model_pose("newcomer").translation(), [-2.0, 0.0, 0.5])
 
 
 def test_models_far_apart_move_exactly_as_if_nothing_was_spawned_or_deleted():

@@ -437,7 +437,8 @@ class SimServer:
         def work() -> None:
             body = self._scoped(body_name)
             begin = max(start, self.world.time)
-            end = math.inf if duration < 0 else begin + duration
+            # Gazebo applies it in every update with time <= start + duration (both ends).
+            end = math.inf if duration < 0 else begin + duration + 0.5 * self.world.time_step
             self._api_jobs.append(
                 _Job(
                     begin,
@@ -459,7 +460,8 @@ class SimServer:
         def work() -> None:
             owner = self._joint_owner(joint_name)
             begin = max(start, self.world.time)
-            end = math.inf if duration < 0 else begin + duration
+            # Gazebo applies it in every update with time <= start + duration (both ends).
+            end = math.inf if duration < 0 else begin + duration + 0.5 * self.world.time_step
             joint = joint_name.rpartition("::")[2]
             self._api_jobs.append(_Job(begin, end, joint=(owner, joint), effort=float(effort)))
             self._push_forces()
