@@ -260,3 +260,21 @@ def test_bag_play_in_a_loop_stops_from_a_background_job(tmp_path, sig):
     status, log = run_job(tmp_path, "bag play -l in.bag", "grep -q 'Opening' job.log", sig)
     assert status == STATUS[sig], log
     assert "Traceback" not in log
+
+
+@pytest.mark.multiprocess
+@pytest.mark.parametrize("sig", ["INT", "TERM"])
+def test_sim_stops_from_a_background_job_and_writes_its_recording(tmp_path, sig):
+    uri = f"tcp/127.0.0.1:{_free_port()}"
+    status, log = run_job(
+        tmp_path,
+        "sim model_push --html rec.html",
+        "grep -q 'services ready' job.log",
+        sig,
+        uri=uri,
+    )
+    assert status == STATUS[sig], log
+    assert "stopped at t =" in log and "wrote" in log and "Traceback" not in log
+    from workbench.viz.snapshot import snapshot_paths
+
+    assert any("box" in path for path in snapshot_paths(tmp_path / "rec.html"))

@@ -173,6 +173,8 @@ def run_server(options: ServerOptions) -> int:
         api = GazeboRosApi(server, node)
         if view is not None:
             print(f"[INFO] Meshcat: {view.meshcat.web_url()}", flush=True)
+        for label in server.plugin_labels():
+            print(f"[INFO] plugin loaded: {label}", flush=True)
         state = "paused" if server.paused else "running"
         print(
             f"[INFO] workbench sim: world '{options.world}' {state}, models: "

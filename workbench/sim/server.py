@@ -379,6 +379,13 @@ class SimServer:
         """The running plugins."""
         return [slot.plugin for slot in self._plugins]
 
+    def plugin_labels(self) -> list[str]:
+        """``name (filename)`` of each running plugin, with its model."""
+        return [
+            f"{slot.spec.name} ({slot.spec.filename}{', model ' + slot.model if slot.model else ''})"
+            for slot in self._plugins
+        ]
+
     def set_plugin_effort(self, owner: Any, key: tuple[str, str], effort: float) -> None:
         """Set a joint effort ``{(model, joint): effort}`` until ``owner``'s next update."""
         owner.efforts[key] = effort
