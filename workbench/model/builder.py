@@ -319,7 +319,7 @@ class ModelBuilder:
             upper,
             effort,
             velocity,
-            float(damping),  # type: ignore[arg-type]
+            float(damping),
         )
         return self
 
@@ -593,8 +593,8 @@ class ModelBuilder:
             if joint.damping:
                 out.append(f'    <dynamics damping="{joint.damping:g}"/>')
             out.append("  </joint>")
-        for link in frictionless:
-            out.append(f"  <gazebo reference={quoteattr(link)}><mu1>0</mu1><mu2>0</mu2></gazebo>")
+        for caster in frictionless:
+            out.append(f"  <gazebo reference={quoteattr(caster)}><mu1>0</mu1><mu2>0</mu2></gazebo>")
         if self.static:
             out.append("  <gazebo><static>true</static></gazebo>")
         for name, filename, parameters in self._plugins:
@@ -634,7 +634,7 @@ def _pose(pose: Any, what: str) -> Pose:
         values = (*values, 0.0, 0.0, 0.0)
     if len(values) != 6 or not all(math.isfinite(v) for v in values):
         raise ModelError(f"{what}: pose must be (x, y, z[, roll, pitch, yaw]) finite numbers")
-    return values  # type: ignore[return-value]
+    return values
 
 
 def _rotation(pose: Any) -> np.ndarray:

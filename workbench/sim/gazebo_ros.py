@@ -488,7 +488,8 @@ def _transform(pose: Any, what: str) -> Any:
     norm = float(np.linalg.norm(q))
     if norm < 1e-9:  # Gazebo normalises; an all-zero quaternion means no rotation
         q, norm = np.array([1.0, 0.0, 0.0, 0.0]), 1.0
-    return RigidTransform(RotationMatrix(Quaternion(q / norm)), p)
+    # pydrake's stubs give numpy arrays a float64 shape; these vectors are right
+    return RigidTransform(RotationMatrix(Quaternion(q / norm)), p)  # type: ignore[arg-type]
 
 
 def _place_relative(X_WM_now: Any, X_WF: Any, X_FM: Any) -> Any:

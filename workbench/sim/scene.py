@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import logging
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -108,7 +109,7 @@ def add_placed_model(plant: Any, placed: PlacedModel) -> Any:
     parser = Parser(plant)
     for package, folder in model.package_map.items():
         if not parser.package_map().Contains(package):
-            parser.package_map().Add(package, folder)
+            parser.package_map().Add(package, Path(folder))
     drake_log = logging.getLogger("drake")
     level = drake_log.level
     drake_log.setLevel(logging.ERROR)  # what Drake would warn about was fixed and reported already

@@ -434,8 +434,8 @@ class SimServer:
     def apply_body_wrench(
         self,
         body_name: str,
-        force: Sequence[float],
-        torque: Sequence[float],
+        force: Sequence[float] | np.ndarray,
+        torque: Sequence[float] | np.ndarray,
         start: float,
         duration: float,
     ) -> None:

@@ -599,9 +599,10 @@ class World:
         )
         from pydrake.multibody.math import SpatialVelocity
 
+        # pydrake's stubs give numpy arrays a float64 shape; any float 3-vector is right here
         V = SpatialVelocity(
-            np.asarray(angular if angular is not None else np.zeros(3), dtype=float),
-            np.asarray(linear if linear is not None else np.zeros(3), dtype=float),
+            np.asarray(angular if angular is not None else np.zeros(3), dtype=float),  # type: ignore[arg-type]
+            np.asarray(linear if linear is not None else np.zeros(3), dtype=float),  # type: ignore[arg-type]
         )
         self.plant.SetFreeBodySpatialVelocity(plant_context, body, V)
 
@@ -638,9 +639,11 @@ class World:
         for body, force, torque in wrenches:
             applied = ExternallyAppliedSpatialForce()
             applied.body_index = body.index()
-            applied.p_BoBq_B = np.zeros(3)
+            # pydrake's stubs give numpy arrays a float64 shape; 3-vectors are right here
+            applied.p_BoBq_B = np.zeros(3)  # type: ignore[assignment]
             applied.F_Bq_W = SpatialForce(
-                np.asarray(torque, dtype=float), np.asarray(force, dtype=float)
+                np.asarray(torque, dtype=float),  # type: ignore[arg-type]
+                np.asarray(force, dtype=float),  # type: ignore[arg-type]
             )
             forces.append(applied)
         plant_context = self.plant.GetMyMutableContextFromRoot(self.context)
