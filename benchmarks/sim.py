@@ -7,8 +7,8 @@ Accuracy (workbench's server physics: 1 ms, point contact, Drake's lagged solver
 
 * free fall: a 0.1 m box dropped from 2 m, z(t) before contact vs z0 - g t^2 / 2;
 * resting: the box on the ground for 10 s, its height vs 0.05 m and its drift;
-* sliding: the box launched at 2 m/s with friction mu = 0.5, stopping distance
-  vs v^2 / (2 mu g);
+* sliding: a flat box launched at 2 m/s with mu = 0.5 on the ground's 1.0 (Drake
+  combines them as 2ab/(a+b) = 0.667), stopping distance vs v^2 / (2 mu g);
 * spinning top: ``urdf/spinning_top.urdf`` tilted 0.2 rad, spun at 150 rad/s
   about its axis, precession rate vs m g l / (I3 w).
 
@@ -55,11 +55,15 @@ BOX_MASS = 0.5
 BOXES = 20
 WHEEL_TORQUE = 0.3  # N m on each wheel
 WHEEL_DAMPING = 0.5  # N m s / rad, written into the robot for every engine
+ROBOT_POSE = [0.0, 0.0, -0.075]  # the manual's robot: its caster's bottom is 7.5 cm up
 
 
-def box_urdf(name: str, mu: float | None = None) -> str:
-    """A 0.1 m, 0.5 kg cube; ``mu`` sets its Gazebo friction."""
-    inertia = BOX_MASS * BOX * BOX / 6.0
+def box_urdf(
+    name: str, mu: float | None = None, size: tuple[float, float, float] = (BOX, BOX, BOX)
+) -> str:
+    """A 0.5 kg box (default a 0.1 m cube); ``mu`` sets its Gazebo friction."""
+    x, y, z = size
+    ixx, iyy, izz = (BOX_MASS * (a * a + b * b) / 12.0 for a, b in ((y, z), (x, z), (x, y)))
     friction = (
         f'<gazebo reference="body"><mu1>{mu}</mu1><mu2>{mu}</mu2></gazebo>'
         if mu is not None
@@ -67,9 +71,9 @@ def box_urdf(name: str, mu: float | None = None) -> str:
     )
     return f"""<robot name="{name}"><link name="body">
   <inertial><mass value="{BOX_MASS}"/>
-    <inertia ixx="{inertia}" iyy="{inertia}" izz="{inertia}" ixy="0" ixz="0" iyz="0"/></inertial>
-  <visual><geometry><box size="{BOX} {BOX} {BOX}"/></geometry></visual>
-  <collision><geometry><box size="{BOX} {BOX} {BOX}"/></geometry></collision>
+    <inertia ixx="{ixx}" iyy="{iyy}" izz="{izz}" ixy="0" ixz="0" iyz="0"/></inertial>
+  <visual><geometry><box size="{x} {y} {z}"/></geometry></visual>
+  <collision><geometry><box size="{x} {y} {z}"/></geometry></collision>
 </link>{friction}</robot>"""
 
 
@@ -109,9 +113,10 @@ def resting(duration: float) -> dict[str, float]:
 
 
 def sliding(mu: float = 0.5, speed: float = 2.0) -> dict[str, float]:
+    # a flat box (0.2 x 0.2 x 0.05 m): a cube launched this fast tips over
     world = server_world()
-    model = sim_model_from_xml(box_urdf("box", mu=mu), name="box", source="bench")
-    world.add_model(model, [0, 0, 0.05])
+    flat = box_urdf("box", mu=mu, size=(0.2, 0.2, 0.05))
+    world.add_model(sim_model_from_xml(flat, name="box", source="bench"), [0, 0, 0.025])
     world.build()
     world.advance_to(0.2)
     start = world.get_model_pose("box").translation()
@@ -170,7 +175,7 @@ def table_scene(world: World) -> None:
 
 def robot_scene(world: World) -> None:
     model = load_sim_model(urdf_dir() / "two_wheeled_robot.sdf", name="robot")
-    world.add_model(model, [0, 0, 0.0])
+    world.add_model(model, ROBOT_POSE)
 
 
 def wheel_joints(world: World) -> list[str]:
@@ -300,7 +305,16 @@ def pybullet_files(tmp: Path) -> tuple[list, list]:
         path.write_text(box_urdf(f"box_{i}"))
         x, y = -0.3 + 0.2 * (i % 4), -0.8 + 0.4 * (i // 4)
         table.append((str(path), [x, y, 1.0 + 0.15 * rng.random()]))
-    robot = [(str(urdf_dir() / "two_wheeled_robot.sdf"), [0, 0, 0.0])]
+    # PyBullet's SDF reader wants limits on revolute joints: the same robot from
+    # the same builder script as URDF (its ball caster fixed and frictionless, as
+    # workbench simulates the SDF's).
+    import runpy
+
+    builder = runpy.run_path(
+        str(urdf_dir().parent / "examples" / "gazebo" / "build_two_wheeled_robot.py")
+    )
+    robot_urdf = builder["build"]().save(tmp / "two_wheeled_robot.urdf")
+    robot = [(str(robot_urdf), ROBOT_POSE)]
     return table, robot
 
 

@@ -10,16 +10,25 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
+#: package -> (the store's identity and size when computed, members): a lookup per
+#: attribute access scanned every registered type, which made code that imports a
+#: message class inside a loop slow.
+_MEMBERS: dict[str, tuple[tuple[int, int, int], dict[str, Any]]] = {}
+
 
 def package_members(package: str) -> dict[str, Any]:
     """Name -> class for every message and service type of ``package``.
 
     A service ``Spawn`` also exports ``SpawnRequest`` and ``SpawnResponse``, as rospy's
-    generated modules do.
+    generated modules do. Recomputed when types are registered.
     """
     from workbench.msgs._store import store
 
     types = store()
+    key = (id(types), len(types.classes), len(types.services))
+    cached = _MEMBERS.get(package)
+    if cached is not None and cached[0] == key:
+        return cached[1]
     members: dict[str, Any] = {}
     for name, cls in types.classes.items():
         if name.split("/")[0] == package:
@@ -27,6 +36,7 @@ def package_members(package: str) -> dict[str, Any]:
     for name, service in types.services.items():
         if name.split("/")[0] == package:
             members[service.__name__] = service
+    _MEMBERS[package] = (key, members)
     return members
 
 

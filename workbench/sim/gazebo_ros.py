@@ -503,27 +503,22 @@ def _place_relative(X_WM_now: Any, X_WF: Any, X_FM: Any) -> Any:
 
 
 def _pose(X: Any) -> Any:
-    from workbench.msgs.geometry_msgs import Pose
+    from workbench.msgs.geometry_msgs import Point, Pose, Quaternion
 
-    pose = Pose()
     if X is None:
-        pose.orientation.w = 1.0
-        return pose
-    p = X.translation()
+        return Pose(Point(0.0, 0.0, 0.0), Quaternion(0.0, 0.0, 0.0, 1.0))
+    x, y, z = (float(c) for c in X.translation())
     q = X.rotation().ToQuaternion()
-    pose.position.x, pose.position.y, pose.position.z = (float(c) for c in p)
-    pose.orientation.w, pose.orientation.x = float(q.w()), float(q.x())
-    pose.orientation.y, pose.orientation.z = float(q.y()), float(q.z())
-    return pose
+    return Pose(Point(x, y, z), Quaternion(float(q.x()), float(q.y()), float(q.z()), float(q.w())))
 
 
 def _twist(v: Any, w: Any) -> Any:
-    from workbench.msgs.geometry_msgs import Twist
+    from workbench.msgs.geometry_msgs import Twist, Vector3
 
-    twist = Twist()
-    twist.linear.x, twist.linear.y, twist.linear.z = (float(c) for c in v)
-    twist.angular.x, twist.angular.y, twist.angular.z = (float(c) for c in w)
-    return twist
+    return Twist(
+        Vector3(float(v[0]), float(v[1]), float(v[2])),
+        Vector3(float(w[0]), float(w[1]), float(w[2])),
+    )
 
 
 def _stamp(t: float) -> Any:

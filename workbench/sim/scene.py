@@ -20,6 +20,8 @@ from workbench.spatial import rigid_transform
 GROUND_NAME = "ground_plane"
 GROUND_FRICTION = 1.0
 GROUND_SIZE = 100.0
+CORNER_RADIUS = 0.001
+_CORNERS = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=float)
 
 _LOG = logging.getLogger("workbench.sim")
 
@@ -90,12 +92,13 @@ def add_obstacle(plant: Any, name: str, shape: Any, X_WB: Any, rgba: Any) -> Non
     plant.RegisterVisualGeometry(world, X_WB, shape, name, color)
 
 
-def add_placed_model(plant: Any, placed: PlacedModel) -> Any:
+def add_placed_model(plant: Any, placed: PlacedModel, scene_graph: Any = None) -> Any:
     """Parse ``placed.model`` into ``plant`` and put it at ``placed.X_WM``.
 
     Root bodies (those no joint of the model moves) are free bodies placed at
     ``X_WM * X_MB``, or welded there when the model is static. ``-J`` joint
-    positions become the joints' default positions.
+    positions become the joints' default positions. With ``scene_graph``, the
+    boxes of a free model get corner points (:func:`add_corner_points`).
 
     Returns:
         The model instance.
@@ -150,8 +153,54 @@ def add_placed_model(plant: Any, placed: PlacedModel) -> Any:
         joint.set_default_positions(np.array([float(value)]))
     if not model.gravity:
         plant.set_gravity_enabled(instance, False)
+    if not model.static and scene_graph is not None:
+        add_corner_points(plant, scene_graph, instance)
     placed.instance = instance
     return instance
+
+
+def add_corner_points(plant: Any, scene_graph: Any, instance: Any) -> None:
+    """Give every box of a free model small spheres in its 8 corners.
+
+    Drake's point contact makes one contact point per pair of geometries, so a
+    box standing on the ground (or on another box) touches it at one point and
+    rocks, hops and stops short when pushed; Gazebo's ODE makes a point per
+    touching corner. A sphere of radius ``CORNER_RADIUS`` inside each corner,
+    flush with the faces and with the box's friction, gives the same corner
+    contacts (the standard way to make boxes sit flat under point contact).
+    """
+    from pydrake.geometry import Box, ProximityProperties, Sphere
+    from pydrake.math import RigidTransform
+
+    inspector = scene_graph.model_inspector()
+    boxes = []
+    # Everything is read before anything is registered: registering moves the plant's
+    # geometry lists, and the ids pybind handed out point into them.
+    for index in plant.GetBodyIndices(instance):
+        body = plant.get_body(index)
+        for geometry in plant.GetCollisionGeometriesForBody(body):
+            shape = inspector.GetShape(geometry)
+            if isinstance(shape, Box):
+                half = np.array([shape.width(), shape.depth(), shape.height()]) / 2.0
+                boxes.append(
+                    (
+                        body,
+                        half,
+                        RigidTransform(inspector.GetPoseInFrame(geometry)),
+                        ProximityProperties(inspector.GetProximityProperties(geometry)),
+                        inspector.GetName(geometry),
+                    )
+                )
+    for body, half, X_BG, properties, name in boxes:
+        radius = min(CORNER_RADIUS, 0.25 * float(half.min()))
+        for k, signs in enumerate(_CORNERS):
+            plant.RegisterCollisionGeometry(
+                body,
+                X_BG.multiply(rigid_transform(signs * (half - radius))),
+                Sphere(radius),
+                f"{name}_corner_{k}",
+                properties,
+            )
 
 
 def filter_self_collisions(plant: Any, scene_graph: Any, instance: Any) -> None:

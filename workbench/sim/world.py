@@ -247,18 +247,18 @@ class World:
         if self.diagram is None:
             self._models[model.name] = placed
             try:
-                add_placed_model(self.plant, placed)
-            except SimulationError:
+                add_placed_model(self.plant, placed, self.scene_graph)
+            except (SimulationError, RuntimeError) as error:
                 del self._models[model.name]
-                raise
+                self._replay()
+                raise _as_simulation_error(error, model) from None
             return
         self._models[model.name] = placed
         try:
             self.rebuild()
-        except SimulationError:
-            del self._models[model.name]
-            self.rebuild()
-            raise
+        except (SimulationError, RuntimeError) as error:
+            del self._models[model.name]  # the rebuild left the world as it was
+            raise _as_simulation_error(error, model) from None
 
     def remove_model(self, name: str) -> None:
         """Delete a model (or robot) from the world; the others keep their state."""
@@ -452,7 +452,7 @@ class World:
             entry.robot = self._load_robot(entry.robot, name, entry.X_WB, floating)
             entry.command = entry.controller = None
         for placed in self._models.values():
-            add_placed_model(self.plant, placed)
+            add_placed_model(self.plant, placed, self.scene_graph)
 
     def rebuild(self) -> None:
         """Build the diagram again from what the world holds, keeping time and every model's state.
@@ -465,10 +465,33 @@ class World:
             self._replay()
             return
         saved = self._save_state()
-        self.diagram = self.simulator = self.context = None
-        self.visualizer = self.contact_visualizer = None
-        self._replay()
-        self._assemble()
+        names = (
+            "builder",
+            "plant",
+            "scene_graph",
+            "diagram",
+            "simulator",
+            "context",
+            "visualizer",
+            "contact_visualizer",
+            "efforts_source",
+        )
+        previous = {name: getattr(self, name) for name in names}
+        entries = {n: (e.robot, e.command, e.controller) for n, e in self._robots.items()}
+        try:
+            self.diagram = self.simulator = self.context = None
+            self.visualizer = self.contact_visualizer = None
+            self._replay()
+            self._assemble()
+        except BaseException:
+            # Drake refused something: the world stays as it was, still running
+            for name, value in previous.items():
+                setattr(self, name, value)
+            for name, (robot, command, controller) in entries.items():
+                if name in self._robots:
+                    entry = self._robots[name]
+                    entry.robot, entry.command, entry.controller = robot, command, controller
+            raise
         self._restore_state(saved)
         self.simulator.Initialize()
         self.rebuilds += 1
@@ -1014,6 +1037,15 @@ def _transform(X: Any) -> Any:
         return as_rigid_transform(X)
     except SpatialError as error:
         raise SimulationError(error.message, hint=error.hint) from None
+
+
+def _as_simulation_error(error: Exception, model: SimModel) -> SimulationError:
+    if isinstance(error, SimulationError):
+        return error
+    first = next((line for line in str(error).splitlines() if line.strip()), type(error).__name__)
+    return SimulationError(
+        f"model '{model.name}' ({model.source}): Drake cannot simulate it: {first}"
+    )
 
 
 def _model_transform(name: str, X: Any) -> Any:
