@@ -16,6 +16,7 @@ and ``/gazebo/set_model_state`` (subscribed). Status messages are Gazebo's own.
 from __future__ import annotations
 
 import logging
+import time
 from typing import Any
 
 import numpy as np
@@ -55,7 +56,7 @@ class GazeboRosApi:
         self.model_states = node.create_publisher("/gazebo/model_states", gm.ModelStates, 1)
         self.link_states = node.create_publisher("/gazebo/link_states", gm.LinkStates, 1)
         self._subscriber_counts = (0, 0)
-        self._count_checked = -1.0
+        self._count_checked = -1e9
         services = {
             "spawn_urdf_model": (gm.SpawnModel, self._spawn_urdf),
             "spawn_sdf_model": (gm.SpawnModel, self._spawn_sdf),
@@ -100,12 +101,13 @@ class GazeboRosApi:
         if t + 1e-12 < self._next_states:
             return
         self._next_states = t + self.state_period
-        if t - self._count_checked >= 0.1 or t < self._count_checked:
+        now = time.monotonic()
+        if now - self._count_checked >= 0.2:  # who listens, looked up 5 times a wall second
             self._subscriber_counts = (
                 self.model_states.get_num_connections(),
                 self.link_states.get_num_connections(),
             )
-            self._count_checked = t
+            self._count_checked = now
         models, links = self._subscriber_counts
         if models:
             self.model_states.publish(self.model_states_message())

@@ -98,7 +98,9 @@ def add_placed_model(plant: Any, placed: PlacedModel, scene_graph: Any = None) -
     Root bodies (those no joint of the model moves) are free bodies placed at
     ``X_WM * X_MB``, or welded there when the model is static. ``-J`` joint
     positions become the joints' default positions. With ``scene_graph``, the
-    boxes of a free model get corner points (:func:`add_corner_points`).
+    boxes of a free one-link model (a box, a cup: things that lie on surfaces) get
+    corner points (:func:`add_corner_points`); robots stand on their wheels and
+    casters, and 8 more geometries per box would slow them down.
 
     Returns:
         The model instance.
@@ -153,14 +155,14 @@ def add_placed_model(plant: Any, placed: PlacedModel, scene_graph: Any = None) -
         joint.set_default_positions(np.array([float(value)]))
     if not model.gravity:
         plant.set_gravity_enabled(instance, False)
-    if not model.static and scene_graph is not None:
+    if not model.static and scene_graph is not None and len(plant.GetBodyIndices(instance)) == 1:
         add_corner_points(plant, scene_graph, instance)
     placed.instance = instance
     return instance
 
 
 def add_corner_points(plant: Any, scene_graph: Any, instance: Any) -> None:
-    """Give every box of a free model small spheres in its 8 corners.
+    """Give every box of ``instance`` small spheres in its 8 corners.
 
     Drake's point contact makes one contact point per pair of geometries, so a
     box standing on the ground (or on another box) touches it at one point and
