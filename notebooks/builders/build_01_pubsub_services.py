@@ -26,7 +26,7 @@ cells = [
         "from workbench.bus import Bus, Node\n"
         "from workbench.msgs.beginner_tutorials import AddTwoInts\n"
         "from workbench.msgs.std_msgs import String\n\n"
-        "SHORT = os.environ.get(\"WORKBENCH_NOTEBOOK_MODE\") == \"short\"\n"
+        'SHORT = os.environ.get("WORKBENCH_NOTEBOOK_MODE") == "short"\n'
         "SECONDS = 0.5 if SHORT else 2.0"
     ),
     new_markdown_cell(
@@ -36,33 +36,33 @@ cells = [
     ),
     new_code_cell(
         "bus = Bus()\n"
-        "talker = Node(\"talker\", bus=bus, anonymous=True)\n"
-        "listener = Node(\"listener\", bus=bus, anonymous=True)\n"
-        "pub = talker.create_publisher(\"chatter\", String, queue_size=10)\n"
+        'talker = Node("talker", bus=bus, anonymous=True)\n'
+        'listener = Node("listener", bus=bus, anonymous=True)\n'
+        'pub = talker.create_publisher("chatter", String, queue_size=10)\n'
         "heard = []\n\n"
         "def callback(msg):\n"
         "    heard.append(msg.data)\n"
-        "    listener.get_logger().info(listener.name + \"I heard %s\", msg.data)\n\n"
-        "listener.create_subscription(\"chatter\", String, callback)\n"
-        "timer = talker.create_timer(0.1, lambda event: pub.publish(String(data=\"hello world\")))\n"
+        '    listener.get_logger().info(listener.name + "I heard %s", msg.data)\n\n'
+        'listener.create_subscription("chatter", String, callback)\n'
+        'timer = talker.create_timer(0.1, lambda event: pub.publish(String(data="hello world")))\n'
         "time.sleep(SECONDS)\n"
         "timer.shutdown()\n"
-        "print(len(heard), \"messages heard\")"
+        'print(len(heard), "messages heard")'
     ),
     new_markdown_cell(
         "## 2. The add_two_ints service\n\n"
         "The handler returns the sum; the client's call blocks until the response comes back."
     ),
     new_code_cell(
-        "server = Node(\"add_two_ints_server\", bus=bus)\n\n"
+        'server = Node("add_two_ints_server", bus=bus)\n\n'
         "def handle_add_two_ints(req):\n"
-        "    print(\"Returning [%s + %s = %s]\" % (req.a, req.b, req.a + req.b))\n"
+        '    print("Returning [%s + %s = %s]" % (req.a, req.b, req.a + req.b))\n'
         "    return AddTwoInts.Response(sum=req.a + req.b)\n\n"
-        "server.create_service(\"add_two_ints\", AddTwoInts, handle_add_two_ints)\n"
-        "client = listener.create_client(\"add_two_ints\", AddTwoInts)\n"
+        'server.create_service("add_two_ints", AddTwoInts, handle_add_two_ints)\n'
+        'client = listener.create_client("add_two_ints", AddTwoInts)\n'
         "client.wait_for_service(timeout=5.0)\n"
-        "print(\"Requesting 1+3\")\n"
-        "print(\"1 + 3 =\", client.call(AddTwoInts.Request(a=1, b=3)).sum)"
+        'print("Requesting 1+3")\n'
+        'print("1 + 3 =", client.call(AddTwoInts.Request(a=1, b=3)).sum)'
     ),
     new_markdown_cell(
         "## 3. Parameters and the graph\n\n"
@@ -70,14 +70,14 @@ cells = [
         "node's namespace) and private (`~rate`, under the node's name)."
     ),
     new_code_cell(
-        "server.set_param(\"/turtlesim/background_r\", 150)\n"
-        "server.set_param(\"~offset\", 0)\n"
-        "print(bus.params.get(\"/\"))\n"
-        "print(\"search:\", server.search_param(\"turtlesim\"))\n"
+        'server.set_param("/turtlesim/background_r", 150)\n'
+        'server.set_param("~offset", 0)\n'
+        'print(bus.params.get("/"))\n'
+        'print("search:", server.search_param("turtlesim"))\n'
         "graph = bus.graph()\n"
         "for name, topic in graph.topics.items():\n"
-        "    print(f\"{name:12} {topic.type:20} pubs={topic.publishers} subs={topic.subscribers}\")\n"
-        "print(\"services:\", list(graph.services))"
+        '    print(f"{name:12} {topic.type:20} pubs={topic.publishers} subs={topic.subscribers}")\n'
+        'print("services:", list(graph.services))'
     ),
     new_markdown_cell(
         "## 4. Stepping by hand\n\n"
@@ -86,15 +86,15 @@ cells = [
     ),
     new_code_cell(
         "stepped = Bus(threaded=False)\n"
-        "a, b = Node(\"a\", bus=stepped), Node(\"b\", bus=stepped)\n"
+        'a, b = Node("a", bus=stepped), Node("b", bus=stepped)\n'
         "got = []\n"
-        "b.create_subscription(\"numbers\", \"std_msgs/Int32\", lambda m: got.append(m.data), queue_size=3)\n"
-        "numbers = a.create_publisher(\"numbers\", \"std_msgs/Int32\")\n"
+        'b.create_subscription("numbers", "std_msgs/Int32", lambda m: got.append(m.data), queue_size=3)\n'
+        'numbers = a.create_publisher("numbers", "std_msgs/Int32")\n'
         "for i in range(5):\n"
         "    numbers.publish(data=i)\n"
-        "print(\"before spinning:\", got)\n"
+        'print("before spinning:", got)\n'
         "stepped.spin_until(lambda: len(got) == 3, timeout=1.0)\n"
-        "print(\"after spinning (queue_size=3 keeps the newest):\", got)\n"
+        'print("after spinning (queue_size=3 keeps the newest):", got)\n'
         "stepped.shutdown()\n"
         "bus.shutdown()"
     ),
@@ -117,43 +117,47 @@ cells = [
         "from workbench.bus.core import Core\n"
         "from workbench.paths import project_root\n\n"
         "with socket.socket() as s:\n"
-        "    s.bind((\"127.0.0.1\", 0))\n"
+        '    s.bind(("127.0.0.1", 0))\n'
         "    port = s.getsockname()[1]\n"
-        "uri = f\"tcp/127.0.0.1:{port}\"\n"
+        'uri = f"tcp/127.0.0.1:{port}"\n'
         "core = Core(uri)\n"
-        "env = dict(os.environ, WORKBENCH_MASTER_URI=uri, PYTHONUNBUFFERED=\"1\")\n"
-        "examples = project_root() / \"examples\"\n"
+        'env = dict(os.environ, WORKBENCH_MASTER_URI=uri, PYTHONUNBUFFERED="1")\n'
+        'examples = project_root() / "examples"\n'
         "children = [\n"
         "    subprocess.Popen([sys.executable, str(examples / name)], env=env,\n"
         "                     stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)\n"
-        "    for name in (\"talker.py\", \"add_two_ints_server.py\")\n"
+        '    for name in ("talker.py", "add_two_ints_server.py")\n'
         "]\n"
-        "print(\"core at\", uri, \"- started\", [c.pid for c in children])"
+        'print("core at", uri, "- started", [c.pid for c in children])'
     ),
     new_code_cell(
         "remote = Bus.connect(uri)\n"
-        "me = Node(\"notebook\", bus=remote, anonymous=True)\n"
+        'me = Node("notebook", bus=remote, anonymous=True)\n'
         "heard_remote = []\n"
-        "me.create_subscription(\"chatter\", String, lambda m: heard_remote.append(m.data))\n"
+        'me.create_subscription("chatter", String, lambda m: heard_remote.append(m.data))\n'
         "remote.spin_until(lambda: len(heard_remote) >= 3, timeout=15)\n"
-        "print(\"heard from the talker process:\", heard_remote[:3])\n"
-        "client = subprocess.run([sys.executable, str(examples / \"add_two_ints_client.py\"), \"1\", \"3\"],\n"
+        'print("heard from the talker process:", heard_remote[:3])\n'
+        'client = subprocess.run([sys.executable, str(examples / "add_two_ints_client.py"), "1", "3"],\n'
         "                        env=env, capture_output=True, text=True, timeout=60)\n"
         "print(client.stdout)\n"
-        "print(\"nodes:\", sorted(remote.graph().nodes))"
+        'print("nodes:", sorted(remote.graph().nodes))'
     ),
     new_markdown_cell("Ctrl-C (SIGINT) stops each script cleanly; then we close the core."),
     new_code_cell(
         "for child in children:\n"
         "    child.send_signal(signal.SIGINT)\n"
-        "print(\"exit codes:\", [child.wait(10) for child in children])\n"
+        'print("exit codes:", [child.wait(10) for child in children])\n'
         "remote.shutdown()\n"
         "core.close()"
     ),
 ]
 
 notebook = new_notebook(cells=cells)
-notebook.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+notebook.metadata["kernelspec"] = {
+    "name": "python3",
+    "display_name": "Python 3",
+    "language": "python",
+}
 out = Path(__file__).resolve().parents[1] / "01_pubsub_services.ipynb"
 nbformat.write(notebook, out)
 print(f"wrote {out}")

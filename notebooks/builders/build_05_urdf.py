@@ -25,9 +25,9 @@ cells = [
         "from IPython.display import Image, display\n\n"
         "from workbench.model import check_robot, graph_robot, load_robot, resolve_robot_path\n"
         "from workbench.viz import Viewer\n\n"
-        "SHORT = os.environ.get(\"WORKBENCH_NOTEBOOK_MODE\") == \"short\"\n"
+        'SHORT = os.environ.get("WORKBENCH_NOTEBOOK_MODE") == "short"\n'
         "viewer = Viewer.instance()\n"
-        "print(\"Meshcat is at\", viewer.url, \"- open it in a browser to see each step\")"
+        'print("Meshcat is at", viewer.url, "- open it in a browser to see each step")'
     ),
     new_markdown_cell(
         "Each step prints the URDF, checks it, draws its graph, shows it in the viewer and "
@@ -46,7 +46,7 @@ cells = [
         "    q = robot.default_positions() if q is None else robot.positions_from(q)\n"
         "    viewer.show_robot(robot, q)\n"
         "    viewer.frame_robot(robot, q)\n"
-        "    print(\"snapshot:\", viewer.save_html(f\"{name}.html\"))\n"
+        '    print("snapshot:", viewer.save_html(f"{name}.html"))\n'
         "    return robot, report"
     ),
     new_markdown_cell(
@@ -55,32 +55,30 @@ cells = [
         "0.2 m in radius. `check` prints what `check_urdf` prints, then workbench's own "
         "findings: a link you can see but not touch has no collision geometry."
     ),
-    new_code_cell("robot, report = step(\"myfirst\")"),
+    new_code_cell('robot, report = step("myfirst")'),
     new_markdown_cell(
         "## 2. Multiple shapes\n"
         "A second link, `right_leg`, needs a joint to say where it is. Both shapes share the "
         "origin, so they overlap."
     ),
-    new_code_cell("robot, report = step(\"multipleshapes\")"),
+    new_code_cell('robot, report = step("multipleshapes")'),
     new_markdown_cell(
         "## 3. Origins\n"
         "The joint origin puts the leg 0.22 m to the right and 0.25 m up; the visual origin "
         "hangs the box 0.3 m below the joint and turns it upright (pitch pi/2)."
     ),
     new_code_cell(
-        "robot, report = step(\"origins\")\n"
-        "print(\"right_leg in the world:\", robot.forward_kinematics()[\"right_leg\"].translation())"
+        'robot, report = step("origins")\n'
+        'print("right_leg in the world:", robot.forward_kinematics()["right_leg"].translation())'
     ),
     new_markdown_cell("## 4. Materials\nBlue body, white legs."),
-    new_code_cell(
-        "robot, report = step(\"materials\")\nprint(robot.materials)"
-    ),
+    new_code_cell('robot, report = step("materials")\nprint(robot.materials)'),
     new_markdown_cell(
         "## 5. The finished model\n"
         "Feet, wheels, a gripper with finger meshes, and a head. The finger meshes are the "
         "project's own OBJ files, found through `package://workbench_urdf/meshes/...`."
     ),
-    new_code_cell("robot, report = step(\"visual\", show_file=not SHORT)\nprint(robot)"),
+    new_code_cell('robot, report = step("visual", show_file=not SHORT)\nprint(robot)'),
     new_markdown_cell(
         "## 6. Movable joints\n"
         "`flexible.urdf` makes the wheels and head continuous, the gripper pole prismatic "
@@ -88,11 +86,11 @@ cells = [
         "(the joint_state_publisher GUI); `poll_sliders()` reads them and moves the robot."
     ),
     new_code_cell(
-        "pose = {\"head_swivel\": 0.8, \"gripper_extension\": -0.2, "
-        "\"left_gripper_joint\": 0.4, \"right_gripper_joint\": 0.4}\n"
-        "robot, report = step(\"flexible\", q=pose, show_file=False)\n"
+        'pose = {"head_swivel": 0.8, "gripper_extension": -0.2, '
+        '"left_gripper_joint": 0.4, "right_gripper_joint": 0.4}\n'
+        'robot, report = step("flexible", q=pose, show_file=False)\n'
         "for joint in robot.movable_joints:\n"
-        "    print(f\"{joint.name:26s} {joint.type:11s} lower={joint.lower} upper={joint.upper}\")\n"
+        '    print(f"{joint.name:26s} {joint.type:11s} lower={joint.lower} upper={joint.upper}")\n'
         "viewer.add_joint_sliders(robot)\n"
         "viewer.poll_sliders()"
     ),
@@ -104,10 +102,10 @@ cells = [
         "`<inertial>`; base_link has the manual's 10 kg and inertia (0.4, 0.4, 0.2)."
     ),
     new_code_cell(
-        "robot, report = step(\"physics\", show_file=False)\n"
+        'robot, report = step("physics", show_file=False)\n'
         "assert report.ok and not report.warnings\n"
         "for link in robot.links[:4]:\n"
-        "    print(f\"{link.name:18s} mass {link.mass} kg  collision: {link.has_collision}\")"
+        '    print(f"{link.name:18s} mass {link.mass} kg  collision: {link.has_collision}")'
     ),
     new_markdown_cell(
         "## 8. What the checker catches\n"
@@ -115,19 +113,19 @@ cells = [
         "(one principal moment larger than the sum of the other two):"
     ),
     new_code_cell(
-        "Path(\"broken.urdf\").write_text('''<?xml version=\"1.0\"?>\n"
-        "<robot name=\"broken\">\n"
-        "  <link name=\"base_link\">\n"
+        'Path("broken.urdf").write_text(\'\'\'<?xml version="1.0"?>\n'
+        '<robot name="broken">\n'
+        '  <link name="base_link">\n'
         "    <inertial>\n"
-        "      <mass value=\"-2\"/>\n"
-        "      <inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"5\"/>\n"
+        '      <mass value="-2"/>\n'
+        '      <inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="5"/>\n'
         "    </inertial>\n"
         "  </link>\n"
         "</robot>\n"
         "''')\n"
-        "report = check_robot(\"broken.urdf\")\n"
+        'report = check_robot("broken.urdf")\n'
         "print(report)\n"
-        "assert [f.code for f in report.errors] == [\"non-positive-mass\", \"inertia-triangle-inequality\"]"
+        'assert [f.code for f in report.errors] == ["non-positive-mass", "inertia-triangle-inequality"]'
     ),
     new_markdown_cell(
         "## 9. A picture for your report\n"
@@ -135,12 +133,16 @@ cells = [
     ),
     new_code_cell(
         "if not SHORT:\n"
-        "    png = viewer.render_png(\"physics.html\", \"physics.png\", width=640, height=480)\n"
+        '    png = viewer.render_png("physics.html", "physics.png", width=640, height=480)\n'
         "    display(Image(filename=str(png)))"
     ),
 ]
 notebook = new_notebook(cells=cells)
-notebook.metadata["kernelspec"] = {"display_name": "Python 3", "language": "python", "name": "python3"}
+notebook.metadata["kernelspec"] = {
+    "display_name": "Python 3",
+    "language": "python",
+    "name": "python3",
+}
 notebook.metadata["language_info"] = {"name": "python"}
 nbformat.validate(notebook)
 nbformat.write(notebook, Path(__file__).resolve().parents[1] / "05_urdf.ipynb")

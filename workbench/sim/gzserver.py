@@ -41,6 +41,7 @@ class ServerOptions:
     contacts: bool = False
     port: int | None = None
     start_core: bool = True
+    record: bool = False
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -121,7 +122,8 @@ def build_server(options: ServerOptions, bus: Any = None) -> tuple[Any, Any, Any
         from workbench.viz import Viewer
 
         viewer = Viewer(port=options.port) if options.port else Viewer.instance()
-        view = LiveView(world, viewer.meshcat, contacts=options.contacts, record=bool(options.html))
+        record = options.record or bool(options.html)
+        view = LiveView(world, viewer.meshcat, contacts=options.contacts, record=record)
     if options.fast:
         speed = 0.0
     elif rtf is not None:
