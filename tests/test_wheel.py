@@ -158,4 +158,11 @@ def test_wheel_installs_and_runs_outside_the_checkout(tmp_path: Path):
     slower = _run(plan, cwd=elsewhere, env=env).stdout
     assert _duration(slower) > 1.2 * _duration(shipped)
 
+    # worlds, plugins and the Gazebo launch packages ship too
+    sim = ["workbench", "sim", "velodyne", "--headless", "--fast", "--until", "0.2"]
+    simulated = _run(sim, cwd=elsewhere, env=env).stdout
+    assert "plugin loaded: velodyne_control" in simulated and "stopped at t = 0.200 s" in simulated
+    dry = ["workbench", "launch", "--dry-run", "gazebo_worlds", "table.launch"]
+    assert "gazebo/spawn_model" in _run(dry, cwd=elsewhere, env=env).stdout
+
     _talker_until_sigint(elsewhere, env)
