@@ -461,12 +461,7 @@ class ModelBuilder:
                     f"        <pose>{_fmt((*com, 0, 0, 0))}</pose>",
                     f"        <mass>{mass:.6g}</mass>",
                     "        <inertia>"
-                    + "".join(
-                        f"<{k}>{_number(inertia[i, j])}</{k}>"
-                        for k, (i, j) in zip(
-                            ("ixx", "iyy", "izz", "ixy", "ixz", "iyz"), _IJ, strict=True
-                        )
-                    )
+                    + "".join(f"<{k}>{v}</{k}>" for k, v in _inertia_entries(inertia))
                     + "</inertia>",
                     "      </inertial>",
                 ]
@@ -542,12 +537,7 @@ class ModelBuilder:
                     f'      <origin xyz="{_fmt(com)}"/>',
                     f'      <mass value="{mass:.6g}"/>',
                     "      <inertia "
-                    + " ".join(
-                        f'{k}="{_number(inertia[i, j])}"'
-                        for k, (i, j) in zip(
-                            ("ixx", "iyy", "izz", "ixy", "ixz", "iyz"), _IJ, strict=True
-                        )
-                    )
+                    + " ".join(f'{k}="{v}"' for k, v in _inertia_entries(inertia))
                     + "/>",
                     "    </inertial>",
                 ]
@@ -621,6 +611,12 @@ class ModelBuilder:
 
 
 _IJ = ((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2))
+
+
+def _inertia_entries(inertia: np.ndarray) -> list[tuple[str, str]]:
+    """``(ixx, value) ... (iyz, value)`` as both formats write them."""
+    names = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
+    return [(k, _number(inertia[i, j])) for k, (i, j) in zip(names, _IJ, strict=True)]
 
 
 def _check_name(name: str, what: str) -> None:

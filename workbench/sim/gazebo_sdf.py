@@ -21,8 +21,8 @@ import numpy as np
 from lxml import etree
 
 from workbench.errors import SimulationError
-from workbench.sim.inertia import describe, inertia_matrix, valid_inertia
-from workbench.sim.model_spec import PluginSpec, SimModel
+from workbench.sim.inertia import ENTRIES, repaired
+from workbench.sim.model_spec import SimModel, element_text, plugin_spec
 
 DRAKE_NS = "http://drake.mit.edu"
 
@@ -87,14 +87,16 @@ def sim_model_from_element(
             setattr(model, "static" if tag == "static" else "self_collide", _truth(element.text))
             model_element.remove(element)
     for plugin in model_element.findall("plugin"):
-        model.plugins.append(_plugin(plugin, "model", None, base_dir, source))
+        model.plugins.append(plugin_spec(plugin, "model", None, base_dir, source))
         model_element.remove(plugin)
     gravity_off = []
     for link in links:
         for sensor in link.findall("sensor"):
             for plugin in sensor.iter("plugin"):
-                model.plugins.append(_plugin(plugin, "sensor", link.get("name"), base_dir, source))
-            model.sensors.append((link.get("name", ""), _xml(sensor)))
+                model.plugins.append(
+                    plugin_spec(plugin, "sensor", link.get("name"), base_dir, source)
+                )
+            model.sensors.append((link.get("name", ""), element_text(sensor)))
             link.remove(sensor)
         gravity = link.find("gravity")
         if gravity is not None:
@@ -192,31 +194,24 @@ def _fix_inertia(link: Any, model: SimModel, where: str) -> None:
     inertia = link.find("inertial/inertia")
     if inertia is None:
         return
-    keys = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
     defaults = {"ixx": 1.0, "iyy": 1.0, "izz": 1.0}
     values = []
-    for key in keys:
+    for key in ENTRIES:
         element = inertia.find(key)
         try:
             values.append(float(element.text) if element is not None else defaults.get(key, 0.0))
         except (TypeError, ValueError):
             return  # Drake reports malformed numbers itself
-    matrix = inertia_matrix(*values)
-    try:
-        fixed = valid_inertia(matrix)
-    except ValueError:
+    repair = repaired(values, link.get("name", ""), where)
+    if repair is None:
         return
-    if fixed is None:
-        return
-    model.warnings.append(
-        f"{where}: link '{link.get('name')}': inertia {describe(matrix)} breaks the triangle "
-        f"inequality (no real body has it; Drake refuses it); using {describe(fixed)}"
-    )
-    for key, (i, j) in zip(keys, ((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)), strict=True):
+    fixed, warning = repair
+    model.warnings.append(warning)
+    for key, value in zip(ENTRIES, fixed, strict=True):
         element = inertia.find(key)
         if element is None:
             element = etree.SubElement(inertia, key)
-        element.text = f"{fixed[i, j]:.12g}"
+        element.text = f"{value:.12g}"
 
 
 def _pose(element: Any, where: str) -> tuple[float, float, float, float, float, float]:
@@ -230,26 +225,6 @@ def _pose(element: Any, where: str) -> tuple[float, float, float, float, float, 
             f"'{(element.text or '').strip()}'"
         )
     return (values[0], values[1], values[2], values[3], values[4], values[5])
-
-
-def _plugin(
-    element: Any, kind: str, reference: str | None, base_dir: Path | None, source: str
-) -> PluginSpec:
-    return PluginSpec(
-        name=element.get("name", ""),
-        filename=element.get("filename", ""),
-        element=_xml(element),
-        kind=kind,
-        reference=reference,
-        base_dir=base_dir,
-        source=f"{source}:{element.sourceline}" if element.sourceline else source,
-    )
-
-
-def _xml(element: Any) -> str:
-    clone = copy.deepcopy(element)
-    clone.tail = None
-    return etree.tostring(clone, encoding="unicode")
 
 
 def _truth(text: str | None) -> bool:

@@ -26,7 +26,6 @@ inertial, 1 kg and 1 kg m^2, as Gazebo gives an SDF link without one).
 
 from __future__ import annotations
 
-import copy
 from pathlib import Path
 from typing import Any
 
@@ -34,14 +33,8 @@ import numpy as np
 from lxml import etree
 
 from workbench.errors import SimulationError
-from workbench.sim.inertia import (
-    DEFAULT_MASS,
-    DEFAULT_MOMENT,
-    describe,
-    inertia_matrix,
-    valid_inertia,
-)
-from workbench.sim.model_spec import PluginSpec, SimModel
+from workbench.sim.inertia import DEFAULT_MASS, DEFAULT_MOMENT, ENTRIES, repaired
+from workbench.sim.model_spec import SimModel, element_text, plugin_spec
 
 DRAKE_NS = "http://drake.mit.edu"
 KD_REFERENCE_PENETRATION = 0.001
@@ -155,11 +148,11 @@ def _apply_block(
             if off:
                 gravity_off.update(link.get("name") for link in targets)
         elif tag == "plugin":
-            model.plugins.append(_plugin(element, "model", reference, base_dir, where))
+            model.plugins.append(plugin_spec(element, "model", reference, base_dir, where))
         elif tag == "sensor":
             for plugin in element.iter("plugin"):
-                model.plugins.append(_plugin(plugin, "sensor", reference, base_dir, where))
-            model.sensors.append((reference or model.root_link or "", _xml(element)))
+                model.plugins.append(plugin_spec(plugin, "sensor", reference, base_dir, where))
+            model.sensors.append((reference or model.root_link or "", element_text(element)))
     contact = {e.tag: _number(e, line) for e in block if e.tag in ("mu1", "mu2", "kp", "kd")}
     if contact and reference:
         _contact(links[reference], contact)
@@ -219,43 +212,16 @@ def _fix_inertial(link: Any, link_name: str, model: SimModel, where: str) -> Non
     inertia = inertial.find("inertia")
     if inertia is None:
         return
-    keys = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
-    values = [_float(inertia.get(k, "0")) for k in keys]
+    values = [_float(inertia.get(k, "0")) for k in ENTRIES]
     if any(v is None for v in values):
         return  # malformed numbers are the URDF parser's to report
-    matrix = inertia_matrix(*[float(v) for v in values])  # type: ignore[arg-type]
-    try:
-        fixed = valid_inertia(matrix)
-    except ValueError:
+    repair = repaired([float(v) for v in values if v is not None], link_name, where)
+    if repair is None:
         return
-    if fixed is None:
-        return
-    model.warnings.append(
-        f"{where}: link '{link_name}': inertia {describe(matrix)} breaks the triangle "
-        f"inequality (no real body has it; Drake refuses it); using {describe(fixed)}"
-    )
-    for key, (i, j) in zip(keys, ((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)), strict=True):
-        inertia.set(key, f"{fixed[i, j]:.12g}")
-
-
-def _plugin(
-    element: Any, kind: str, reference: str | None, base_dir: Path, where: str
-) -> PluginSpec:
-    return PluginSpec(
-        name=element.get("name", ""),
-        filename=element.get("filename", ""),
-        element=_xml(element),
-        kind=kind,
-        reference=reference,
-        base_dir=base_dir,
-        source=f"{where}:{element.sourceline}" if element.sourceline else where,
-    )
-
-
-def _xml(element: Any) -> str:
-    clone = copy.deepcopy(element)
-    clone.tail = None
-    return etree.tostring(clone, encoding="unicode")
+    fixed, warning = repair
+    model.warnings.append(warning)
+    for key, value in zip(ENTRIES, fixed, strict=True):
+        inertia.set(key, f"{value:.12g}")
 
 
 def _number(element: Any, where: str) -> float:

@@ -55,3 +55,23 @@ def describe(matrix: np.ndarray) -> str:
         if abs(matrix[i, j]) > 1e-15:
             parts.append(f"{n}={matrix[i, j]:.6g}")
     return " ".join(parts)
+
+
+ENTRIES = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
+_INDEX = ((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2))
+
+
+def repaired(values: list[float], link: str, where: str) -> tuple[list[float], str] | None:
+    """``(ixx … iyz fixed, warning line)`` when ``values`` break the triangle inequality, else None."""
+    matrix = inertia_matrix(*values)
+    try:
+        fixed = valid_inertia(matrix)
+    except ValueError:
+        return None  # not finite: the parser reports that itself
+    if fixed is None:
+        return None
+    warning = (
+        f"{where}: link '{link}': inertia {describe(matrix)} breaks the triangle "
+        f"inequality (no real body has it; Drake refuses it); using {describe(fixed)}"
+    )
+    return [float(fixed[i, j]) for i, j in _INDEX], warning

@@ -9,8 +9,10 @@ the diagram is (re)built. Everything Drake does not understand (plugins,
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 
 @dataclass(frozen=True)
@@ -83,3 +85,27 @@ class SimModel:
     sensors: list[tuple[str, str]] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
     source: str = ""
+
+
+def element_text(element: Any) -> str:
+    """An lxml element as XML text, without the text that follows it."""
+    from lxml import etree
+
+    clone = copy.deepcopy(element)
+    clone.tail = None
+    return etree.tostring(clone, encoding="unicode")
+
+
+def plugin_spec(
+    element: Any, kind: str, reference: str | None, base_dir: Path | None, source: str
+) -> PluginSpec:
+    """The :class:`PluginSpec` of a ``<plugin>`` element read from ``source``."""
+    return PluginSpec(
+        name=element.get("name", ""),
+        filename=element.get("filename", ""),
+        element=element_text(element),
+        kind=kind,
+        reference=reference,
+        base_dir=base_dir,
+        source=f"{source}:{element.sourceline}" if element.sourceline else source,
+    )
