@@ -15,6 +15,7 @@ and ``/gazebo/set_model_state`` (subscribed). Status messages are Gazebo's own.
 
 from __future__ import annotations
 
+import functools
 import logging
 import time
 from typing import Any
@@ -119,7 +120,6 @@ class GazeboRosApi:
         from workbench.msgs import gazebo_msgs as gm
 
         world = self.server.world
-        message = gm.ModelStates()
         names, poses, twists = [], [], []
         for name in world.model_names():
             names.append(name)
@@ -129,21 +129,18 @@ class GazeboRosApi:
                 continue
             poses.append(_pose(world.get_model_pose(name)))
             twists.append(_twist(*world.get_model_twist(name)))
-        message.name, message.pose, message.twist = names, poses, twists
-        return message
+        return gm.ModelStates._from_wire(names, poses, twists)
 
     def link_states_message(self) -> Any:
         """``gazebo_msgs/LinkStates``: every link as ``model::link``."""
         from workbench.msgs import gazebo_msgs as gm
 
-        message = gm.LinkStates()
         names, poses, twists = [], [], []
         for name, X, V in self.server.world.link_states():
             names.append(name)
             poses.append(_pose(X))
-            twists.append(_twist(np.array(V.translational()), np.array(V.rotational())))
-        message.name, message.pose, message.twist = names, poses, twists
-        return message
+            twists.append(_twist(V.translational(), V.rotational()))
+        return gm.LinkStates._from_wire(names, poses, twists)
 
     # --- services --------------------------------------------------------------------
 
@@ -504,22 +501,39 @@ def _place_relative(X_WM_now: Any, X_WF: Any, X_FM: Any) -> Any:
     )
 
 
-def _pose(X: Any) -> Any:
-    from workbench.msgs.geometry_msgs import Point, Pose, Quaternion
+# Messages the server publishes at 100 Hz are built with the classes' trusted
+# constructor (``_from_wire``, the deserializer's): the values are floats computed
+# here, and the checked constructors cost 4x as much per message.
 
+
+@functools.lru_cache(maxsize=1)
+def _geometry() -> Any:
+    """The geometry_msgs classes, looked up once (a lookup per message costs 2 us each)."""
+    from workbench.msgs import geometry_msgs
+
+    return geometry_msgs
+
+
+def _pose(X: Any) -> Any:
+    g = _geometry()
+    Point, Pose, Quaternion = g.Point, g.Pose, g.Quaternion  # noqa: N806 - class names
     if X is None:
-        return Pose(Point(0.0, 0.0, 0.0), Quaternion(0.0, 0.0, 0.0, 1.0))
+        return Pose._from_wire(
+            Point._from_wire(0.0, 0.0, 0.0), Quaternion._from_wire(0.0, 0.0, 0.0, 1.0)
+        )
     x, y, z = (float(c) for c in X.translation())
     q = X.rotation().ToQuaternion()
-    return Pose(Point(x, y, z), Quaternion(float(q.x()), float(q.y()), float(q.z()), float(q.w())))
+    return Pose._from_wire(
+        Point._from_wire(x, y, z),
+        Quaternion._from_wire(float(q.x()), float(q.y()), float(q.z()), float(q.w())),
+    )
 
 
 def _twist(v: Any, w: Any) -> Any:
-    from workbench.msgs.geometry_msgs import Twist, Vector3
-
-    return Twist(
-        Vector3(float(v[0]), float(v[1]), float(v[2])),
-        Vector3(float(w[0]), float(w[1]), float(w[2])),
+    Twist, Vector3 = _geometry().Twist, _geometry().Vector3  # noqa: N806 - class names
+    return Twist._from_wire(
+        Vector3._from_wire(float(v[0]), float(v[1]), float(v[2])),
+        Vector3._from_wire(float(w[0]), float(w[1]), float(w[2])),
     )
 
 
