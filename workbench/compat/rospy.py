@@ -66,6 +66,13 @@ __all__ = [
     "logerr",
     "logfatal",
     "loginfo",
+    "logdebug_once",
+    "logdebug_throttle",
+    "logerr_once",
+    "logerr_throttle",
+    "loginfo_once",
+    "logwarn_once",
+    "logwarn_throttle",
     "logwarn",
     "myargv",
     "on_shutdown",
@@ -406,15 +413,49 @@ logerror = logerr
 logwarning = logwarn
 
 
-def loginfo_throttle(period: float, msg: Any) -> None:
-    """Log at most once per ``period`` seconds from one call site."""
-    frame = sys._getframe(1)
+def _throttled(level: str, period: float, msg: Any, args: tuple[Any, ...]) -> None:
+    """Log at most once per ``period`` seconds (inf: once) from the caller's call site."""
+    frame = sys._getframe(2)
     key = (frame.f_code.co_filename, frame.f_lineno)
     now = _time.monotonic()
     throttle = context().throttle
-    if now - throttle.get(key, -1e18) >= period:
+    if key not in throttle or now - throttle[key] >= period:
         throttle[key] = now
-        loginfo(msg)
+        _log(level, msg, *args)
+
+
+def loginfo_throttle(period: float, msg: Any, *args: Any) -> None:
+    """Log at most once per ``period`` seconds from one call site."""
+    _throttled("info", period, msg, args)
+
+
+def logdebug_throttle(period: float, msg: Any, *args: Any) -> None:
+    _throttled("debug", period, msg, args)
+
+
+def logwarn_throttle(period: float, msg: Any, *args: Any) -> None:
+    _throttled("warn", period, msg, args)
+
+
+def logerr_throttle(period: float, msg: Any, *args: Any) -> None:
+    _throttled("error", period, msg, args)
+
+
+def logdebug_once(msg: Any, *args: Any) -> None:
+    """Log only the first time this call site runs (rospy's ``*_once``)."""
+    _throttled("debug", float("inf"), msg, args)
+
+
+def loginfo_once(msg: Any, *args: Any) -> None:
+    _throttled("info", float("inf"), msg, args)
+
+
+def logwarn_once(msg: Any, *args: Any) -> None:
+    _throttled("warn", float("inf"), msg, args)
+
+
+def logerr_once(msg: Any, *args: Any) -> None:
+    _throttled("error", float("inf"), msg, args)
 
 
 # --- parameters -------------------------------------------------------------------------

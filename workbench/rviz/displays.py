@@ -1,0 +1,417 @@
+"""RViz's other default displays: Grid, Axes, TF, LaserScan, PointCloud2, Map, Path, poses, Odometry, RobotModel."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from workbench.rviz.display import Context, Display
+
+
+def _stamped_transform(context: Context, header: Any) -> Any:
+    return context.transform(header.frame_id, header.stamp)
+
+
+def _pose_transform(pose: Any) -> Any:
+    from workbench.spatial import rigid_transform
+
+    q = pose.orientation
+    quaternion = (q.x, q.y, q.z, q.w)
+    if all(v == 0.0 for v in quaternion):
+        quaternion = (0.0, 0.0, 0.0, 1.0)
+    return rigid_transform(
+        [pose.position.x, pose.position.y, pose.position.z], quaternion=quaternion
+    )
+
+
+def _rgba(rgb: tuple[float, float, float], alpha: float = 1.0) -> Any:
+    from pydrake.geometry import Rgba
+
+    return Rgba(rgb[0], rgb[1], rgb[2], alpha)
+
+
+class GridDisplay(Display):
+    """A grid in the fixed frame's xy plane (RViz: 10 cells of 1 m, grey)."""
+
+    class_name = "Grid"
+
+    def __init__(self, cells: int = 10, cell_size: float = 1.0, name: str = "Grid") -> None:
+        super().__init__(topic="", name=name)
+        self.cells = cells
+        self.cell_size = cell_size
+        self._drawn = False
+
+    def update(self, context: Context) -> None:
+        if self._drawn:
+            return
+        half = self.cells * self.cell_size / 2
+        ticks = np.linspace(-half, half, self.cells + 1)
+        starts = np.concatenate(
+            [
+                np.stack([ticks, -half * np.ones_like(ticks), 0 * ticks]),
+                np.stack([-half * np.ones_like(ticks), ticks, 0 * ticks]),
+            ],
+            axis=1,
+        )
+        ends = np.concatenate(
+            [
+                np.stack([ticks, half * np.ones_like(ticks), 0 * ticks]),
+                np.stack([half * np.ones_like(ticks), ticks, 0 * ticks]),
+            ],
+            axis=1,
+        )
+        context.meshcat.SetLineSegments(
+            f"{context.prefix}/{self.path}", np.asfortranarray(starts), np.asfortranarray(ends),
+            1.0, _rgba((0.63, 0.63, 0.64), 0.5),
+        )  # fmt: skip
+        self._drawn = True
+        self.drawn += 1
+
+
+class AxesDisplay(Display):
+    """A triad at ``frame`` (default: the fixed frame)."""
+
+    class_name = "Axes"
+
+    def __init__(self, frame: str = "", length: float = 1.0, name: str = "Axes") -> None:
+        super().__init__(topic="", name=name)
+        self.frame = frame
+        self.length = length
+        self._drawn = False
+
+    def update(self, context: Context) -> None:
+        from workbench.tf.exceptions import TransformException
+        from workbench.viz.frames import add_triad
+
+        path = f"{context.prefix}/{self.path}"
+        if not self._drawn:
+            add_triad(context.meshcat, path, self.length, self.length * 0.05)
+            self._drawn = True
+        try:
+            context.meshcat.SetTransform(path, context.transform(self.frame or context.fixed_frame))
+            self.status.pop("Transform", None)
+        except TransformException as error:
+            self.status["Transform"] = f"No transform from [{self.frame}] to fixed frame: {error}"
+
+
+class TFDisplay(Display):
+    """Every tf frame as a triad in the fixed frame (RViz's TF display)."""
+
+    class_name = "TF"
+
+    def __init__(self, scale: float = 0.3, name: str = "TF") -> None:
+        super().__init__(topic="", name=name)
+        self.scale = scale
+        self._shown: set[str] = set()
+
+    def update(self, context: Context) -> None:
+        from workbench.tf.exceptions import TransformException
+        from workbench.viz.frames import add_triad
+
+        with context.buffer._lock:
+            frames = context.buffer.get_frame_strings()
+        problems = {}
+        for frame in frames:
+            path = f"{context.prefix}/{self.path}/{frame}"
+            try:
+                X = context.transform(frame)
+            except TransformException as error:
+                problems[frame] = f"No transform from [{frame}] to [{context.fixed_frame}]: {error}"
+                continue
+            if frame not in self._shown:
+                add_triad(context.meshcat, path, self.scale, self.scale * 0.03)
+                self._shown.add(frame)
+            context.meshcat.SetTransform(path, X)
+        self.status = problems
+        self.drawn += 1
+
+
+class LaserScanDisplay(Display):
+    """``sensor_msgs/LaserScan`` as points in the fixed frame (default topic ``scan``)."""
+
+    class_name = "LaserScan"
+
+    message_type = "sensor_msgs/LaserScan"
+    default_topic = "scan"
+
+    def __init__(
+        self,
+        topic: str | None = None,
+        size: float = 0.03,
+        color=(1.0, 0.0, 0.0),
+        name: str | None = None,
+    ) -> None:
+        super().__init__(topic, name)
+        self.size = size
+        self.color = color
+
+    def draw(self, context: Context, message: Any) -> None:
+        ranges = np.asarray(message.ranges, dtype=float)
+        angles = message.angle_min + message.angle_increment * np.arange(len(ranges))
+        valid = np.isfinite(ranges) & (ranges >= message.range_min) & (ranges <= message.range_max)
+        xyz = np.stack([ranges * np.cos(angles), ranges * np.sin(angles), np.zeros_like(ranges)])[
+            :, valid
+        ]
+        X = _stamped_transform(context, message.header)
+        _cloud(context, f"{context.prefix}/{self.path}", xyz, self.size, self.color, X)
+
+
+class PointCloud2Display(Display):
+    """``sensor_msgs/PointCloud2`` with x, y, z (and rgb) fields."""
+
+    class_name = "PointCloud2"
+
+    message_type = "sensor_msgs/PointCloud2"
+    default_topic = "points"
+
+    def __init__(
+        self,
+        topic: str | None = None,
+        size: float = 0.01,
+        color=(1.0, 1.0, 1.0),
+        name: str | None = None,
+    ) -> None:
+        super().__init__(topic, name)
+        self.size = size
+        self.color = color
+
+    def draw(self, context: Context, message: Any) -> None:
+        xyz, rgb = cloud_arrays(message)
+        X = _stamped_transform(context, message.header)
+        _cloud(context, f"{context.prefix}/{self.path}", xyz, self.size, self.color, X, rgb)
+
+
+def cloud_arrays(message: Any) -> tuple[np.ndarray, np.ndarray | None]:
+    """``(xyz (3, N), rgb (3, N) uint8 or None)`` of a PointCloud2, NaN points dropped.
+
+    Raises:
+        ValueError: No float32 x, y, z fields.
+    """
+    fields = {f.name: f for f in message.fields}
+    if not all(name in fields and fields[name].datatype == 7 for name in "xyz"):
+        raise ValueError("PointCloud2 needs FLOAT32 x, y and z fields")
+    n = message.width * message.height
+    raw = np.frombuffer(bytes(message.data), dtype=np.uint8)[: n * message.point_step]
+    rows = raw.reshape(n, message.point_step)
+    order = ">" if message.is_bigendian else "<"
+    xyz = np.stack(
+        [
+            rows[:, fields[c].offset : fields[c].offset + 4].copy().view(f"{order}f4")[:, 0]
+            for c in "xyz"
+        ]
+    ).astype(float)
+    rgb = None
+    if "rgb" in fields or "rgba" in fields:
+        field = fields.get("rgb") or fields["rgba"]
+        packed = rows[:, field.offset : field.offset + 4].copy().view(f"{order}u4")[:, 0]
+        rgb = np.stack([(packed >> 16) & 255, (packed >> 8) & 255, packed & 255]).astype(np.uint8)
+    keep = np.all(np.isfinite(xyz), axis=0)
+    return xyz[:, keep], (rgb[:, keep] if rgb is not None else None)
+
+
+def _cloud(
+    context: Context,
+    path: str,
+    xyz: np.ndarray,
+    size: float,
+    color: Any,
+    X: Any,
+    rgb: np.ndarray | None = None,
+) -> None:
+    from pydrake.perception import BaseField, Fields, PointCloud
+
+    fields = BaseField.kXYZs | (BaseField.kRGBs if rgb is not None else 0)
+    cloud = PointCloud(xyz.shape[1], Fields(fields))
+    cloud.mutable_xyzs()[:] = xyz.astype(np.float32)
+    if rgb is not None:
+        cloud.mutable_rgbs()[:] = rgb
+    context.meshcat.SetObject(path, cloud, size, _rgba(color))
+    context.meshcat.SetTransform(path, X)
+
+
+class MapDisplay(Display):
+    """``nav_msgs/OccupancyGrid`` in RViz's "map" colours: free white, occupied black, unknown grey."""
+
+    class_name = "Map"
+
+    message_type = "nav_msgs/OccupancyGrid"
+    default_topic = "map"
+
+    def draw(self, context: Context, message: Any) -> None:
+        info = message.info
+        width, height, resolution = info.width, info.height, info.resolution
+        if width * height == 0 or not resolution > 0:
+            self.status["Map"] = (
+                "Map is zero-sized" if width * height == 0 else "Resolution is not positive"
+            )
+            return
+        cells = np.asarray(message.data, dtype=np.int16).reshape(height, width)
+        grey = np.where(
+            cells < 0, 0.44, 1.0 - np.clip(cells, 0, 100) / 100.0
+        )  # RViz: 0 white, 100 black
+        image = _downsample(grey)
+        path = f"{context.prefix}/{self.path}"
+        _image_quad(context.meshcat, path, image, width * resolution, height * resolution)
+        X_FM = _stamped_transform(context, message.header).multiply(_pose_transform(info.origin))
+        context.meshcat.SetTransform(path, X_FM)
+        self.status.pop("Map", None)
+
+
+def _downsample(image: np.ndarray, limit: int = 1024) -> np.ndarray:
+    step = int(np.ceil(max(image.shape) / limit))
+    return image[::step, ::step] if step > 1 else image
+
+
+def _image_quad(meshcat: Any, path: str, grey: np.ndarray, width_m: float, height_m: float) -> None:
+    """A flat grid of coloured cells (two triangles each) from (0, 0) to (width_m, height_m)."""
+    rows, cols = grey.shape
+    ys, xs = np.mgrid[0 : rows + 1, 0 : cols + 1]
+    vertices = np.stack(
+        [xs.ravel() * width_m / cols, ys.ravel() * height_m / rows, np.zeros(xs.size)]
+    )
+    # per-cell colours need their own vertices: build 4 per cell
+    r, c = np.mgrid[0:rows, 0:cols]
+    r, c = r.ravel(), c.ravel()
+    corners = [(0, 0), (0, 1), (1, 1), (1, 0)]
+    verts = np.concatenate(
+        [vertices[:, (r + dr) * (cols + 1) + (c + dc)] for dr, dc in corners], axis=1
+    )
+    n = r.size
+    idx = np.arange(n, dtype=np.int32)
+    faces = np.concatenate(
+        [np.stack([idx, idx + n, idx + 2 * n]), np.stack([idx, idx + 2 * n, idx + 3 * n])], axis=1
+    )
+    colours = np.tile(np.repeat(grey.ravel()[None, :], 3, axis=0), (1, 4))
+    meshcat.SetTriangleColorMesh(
+        path + "/cells",
+        np.asfortranarray(verts),
+        np.asfortranarray(faces),
+        np.asfortranarray(colours),
+    )
+
+
+class PathDisplay(Display):
+    """``nav_msgs/Path`` as a line strip (RViz: green)."""
+
+    class_name = "Path"
+
+    message_type = "nav_msgs/Path"
+    default_topic = "path"
+
+    def draw(self, context: Context, message: Any) -> None:
+        if len(message.poses) < 2:
+            context.meshcat.Delete(f"{context.prefix}/{self.path}")
+            return
+        X = _stamped_transform(context, message.header)
+        pts = np.array(
+            [[p.pose.position.x, p.pose.position.y, p.pose.position.z] for p in message.poses]
+        ).T
+        context.meshcat.SetLine(
+            f"{context.prefix}/{self.path}", np.asfortranarray(pts), 2.0, _rgba((0.1, 1.0, 0.1))
+        )
+        context.meshcat.SetTransform(f"{context.prefix}/{self.path}", X)
+
+
+class PoseDisplay(Display):
+    """``geometry_msgs/PoseStamped`` as an arrow along the pose's x (RViz's default shape)."""
+
+    class_name = "Pose"
+
+    message_type = "geometry_msgs/PoseStamped"
+    default_topic = "pose"
+
+    def draw(self, context: Context, message: Any) -> None:
+        X = _stamped_transform(context, message.header).multiply(_pose_transform(message.pose))
+        _arrow(context, f"{context.prefix}/{self.path}", X)
+
+
+class PoseArrayDisplay(Display):
+    """``geometry_msgs/PoseArray`` as one arrow per pose."""
+
+    class_name = "PoseArray"
+
+    message_type = "geometry_msgs/PoseArray"
+    default_topic = "particlecloud"
+
+    def draw(self, context: Context, message: Any) -> None:
+        X_FH = _stamped_transform(context, message.header)
+        base = f"{context.prefix}/{self.path}"
+        context.meshcat.Delete(base)
+        for i, pose in enumerate(message.poses[:2000]):
+            _arrow(context, f"{base}/{i}", X_FH.multiply(_pose_transform(pose)), length=0.3)
+
+
+class OdometryDisplay(Display):
+    """``nav_msgs/Odometry``: an arrow at the pose (RViz keeps the last 100; here the newest)."""
+
+    class_name = "Odometry"
+
+    message_type = "nav_msgs/Odometry"
+    default_topic = "odom"
+
+    def draw(self, context: Context, message: Any) -> None:
+        X = _stamped_transform(context, message.header).multiply(_pose_transform(message.pose.pose))
+        _arrow(context, f"{context.prefix}/{self.path}", X, colour=(1.0, 0.1, 0.0))
+
+
+def _arrow(
+    context: Context, path: str, X: Any, length: float = 1.0, colour=(1.0, 0.1, 0.0)
+) -> None:
+    from workbench.msgs.visualization_msgs import Marker
+    from workbench.rviz.marker_draw import draw_marker
+
+    marker = Marker(type=0)
+    marker.scale.x, marker.scale.y, marker.scale.z = length, 0.05 * length, 0.1 * length
+    marker.color.r, marker.color.g, marker.color.b, marker.color.a = (*colour, 1.0)
+    draw_marker(context.meshcat, path, marker)
+    context.meshcat.SetTransform(path, X)
+
+
+class RobotModelDisplay(Display):
+    """The robot in ``robot_description`` (a parameter), each link posed by tf."""
+
+    class_name = "RobotModel"
+
+    def __init__(self, param: str = "robot_description", name: str = "RobotModel") -> None:
+        super().__init__(topic="", name=name)
+        self.param = param
+        self._display: Any = None
+
+    def update(self, context: Context) -> None:
+        if self._display is None and not self._load(context):
+            return
+        self._display.fixed_frame = context.fixed_frame
+        problems = self._display.update()
+        self.status = {link: text for link, text in problems.items()}
+        self.drawn += 1
+
+    def _load(self, context: Context) -> bool:
+        from workbench.errors import WorkbenchError
+        from workbench.model import RobotDescription, load_robot
+        from workbench.robot_state.display import RobotModelDisplay as LinkPoser
+
+        node = context.node
+        if not node.has_param(self.param):
+            self.status["URDF"] = (
+                f"Parameter [{self.param}] does not exist, and was not found by searchParam()"
+            )
+            return False
+        try:
+            robot = load_robot(RobotDescription.from_text(str(node.get_param(self.param))))
+        except WorkbenchError as error:
+            self.status["URDF"] = f"URDF failed to load: {error}"
+            return False
+
+        class _Viewer:
+            meshcat = context.meshcat
+
+            @staticmethod
+            def show_robot(robot: Any, q: Any = None, prefix: str | None = None) -> str:
+                from workbench.viz import Viewer
+
+                return Viewer(context.meshcat).show_robot(robot, q, f"{context.prefix}/{self.path}")
+
+        self._display = LinkPoser(robot, context.buffer, _Viewer(), context.fixed_frame)
+        self.status.pop("URDF", None)
+        return True

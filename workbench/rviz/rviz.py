@@ -1,0 +1,217 @@
+"""RViz in the browser: displays that listen to the bus and draw in one Meshcat.
+
+Example (in a notebook or a script)::
+
+    from workbench.rviz import RViz, displays
+
+    rviz = RViz(bus, fixed_frame="map", displays=[displays.GridDisplay(), "Marker"])
+    rviz.spin(2.0)                  # or rviz.start(): redraw 30 times a second
+    print(rviz.url)                 # open it in a browser
+    rviz.save_html("view.html")
+
+Displays are given as objects or by RViz's class names (``"Marker"``,
+``"MarkerArray"``, ``"LaserScan"``, ``"Map"``, ``"TF"`` ...). Each draws in
+the fixed frame through tf at the message's stamp. A message tf cannot place
+waits up to a second (RViz's message filter), then its display's status says
+``No transform from [frame] to fixed frame [map]: ...``; nothing stops.
+Without a fixed frame, ``map`` is used when tf knows it, else the root of the
+first tf tree (``world`` when tf is empty).
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from pathlib import Path
+from typing import Any
+
+from workbench.rviz import displays as stock
+from workbench.rviz.display import Context, Display
+from workbench.rviz.marker_display import MarkerArrayDisplay, MarkerDisplay
+
+#: RViz display class names -> workbench displays.
+DISPLAY_CLASSES: dict[str, type[Display]] = {
+    "Grid": stock.GridDisplay,
+    "Axes": stock.AxesDisplay,
+    "TF": stock.TFDisplay,
+    "RobotModel": stock.RobotModelDisplay,
+    "Marker": MarkerDisplay,
+    "MarkerArray": MarkerArrayDisplay,
+    "LaserScan": stock.LaserScanDisplay,
+    "PointCloud2": stock.PointCloud2Display,
+    "Map": stock.MapDisplay,
+    "Path": stock.PathDisplay,
+    "Pose": stock.PoseDisplay,
+    "PoseArray": stock.PoseArrayDisplay,
+    "Odometry": stock.OdometryDisplay,
+}
+
+PREFIX = "/rviz"
+
+
+class RViz:
+    """A set of displays drawing the bus's topics in a Meshcat.
+
+    Args:
+        bus: The ``workbench.bus.Bus`` (default: the process-wide one).
+        fixed_frame: RViz's Fixed Frame (None: ``map`` if known, else the tf root).
+        displays: Display objects or RViz class names (default: Grid, TF, Marker,
+            MarkerArray).
+        meshcat: A pydrake ``Meshcat`` (default: the process viewer's).
+        name: The node name (anonymous, as rviz's).
+    """
+
+    def __init__(
+        self,
+        bus: Any = None,
+        *,
+        fixed_frame: str | None = None,
+        displays: list[Display | str] | None = None,
+        meshcat: Any = None,
+        name: str = "rviz",
+    ) -> None:
+        from workbench.bus import Node
+        from workbench.tf import Buffer, TransformListener
+
+        if meshcat is None:
+            from workbench.viz import Viewer
+
+            meshcat = Viewer.instance().meshcat
+        self.meshcat = meshcat
+        self.node = Node(name, bus=bus, anonymous=True)
+        self.buffer = Buffer()
+        self.listener = TransformListener(self.buffer, self.node)
+        self.requested_frame = fixed_frame
+        self.displays: list[Display] = []
+        chosen = displays if displays is not None else ["Grid", "TF", "Marker", "MarkerArray"]
+        for display in chosen:
+            self.add_display(display)
+        # RViz's default view: an orbit camera 10 m from the origin, 45 degrees up
+        # and 45 degrees round; Meshcat's own grid gives way to the Grid display.
+        meshcat.SetCameraPose([5.0, 5.0, 7.07], [0.0, 0.0, 0.0])
+        meshcat.SetProperty("/Grid", "visible", False)
+        self._thread: threading.Thread | None = None
+        self._stop = threading.Event()
+        self._lock = threading.Lock()
+        self.updates = 0
+
+    # --- displays ----------------------------------------------------------------------
+
+    def add_display(self, display: Display | str, **options: Any) -> Display:
+        """Add a display (an object, or an RViz class name with its options) and subscribe it."""
+        if isinstance(display, str):
+            from workbench.errors import ViewerError
+
+            cls = DISPLAY_CLASSES.get(display.split("/")[-1])
+            if cls is None:
+                raise ViewerError(
+                    f"unknown display class '{display}'",
+                    hint="one of: " + ", ".join(DISPLAY_CLASSES),
+                )
+            display = cls(**options)
+        names = {d.name for d in self.displays}
+        base, index = display.name, 2
+        while display.name in names:
+            display.name = f"{base} ({index})"
+            index += 1
+        display.attach(self.node)
+        self.displays.append(display)
+        return display
+
+    # --- drawing -----------------------------------------------------------------------
+
+    @property
+    def fixed_frame(self) -> str:
+        """The frame everything is drawn in (see the module docstring)."""
+        if self.requested_frame:
+            return self.requested_frame
+        with self.buffer._lock:
+            frames = self.buffer.get_frame_strings()
+            info = self.buffer.frames_info()
+        if "map" in frames:
+            return "map"
+        parents = {entry["parent"] for entry in info.values()}
+        roots = sorted(p for p in parents if p not in info)
+        return roots[0] if roots else "world"
+
+    def context(self) -> Context:
+        return Context(
+            meshcat=self.meshcat,
+            buffer=self.buffer,
+            fixed_frame=self.fixed_frame,
+            node=self.node,
+            prefix=PREFIX,
+            resolve_mesh=resolve_mesh,
+        )
+
+    def update(self) -> None:
+        """Draw what arrived since the last update (from one thread at a time)."""
+        with self._lock:
+            context = self.context()
+            for display in self.displays:
+                if display.enabled:
+                    try:
+                        display.update(context)
+                    except Exception as error:  # noqa: BLE001 - a display fails alone, as in RViz
+                        display.status["Error"] = f"{type(error).__name__}: {error}"
+            self.updates += 1
+
+    def spin(self, seconds: float, period: float = 1.0 / 30.0) -> None:
+        """Update for ``seconds`` of wall time (a notebook's or a test's loop)."""
+        end = time.monotonic() + seconds
+        while time.monotonic() < end:
+            self.update()
+            time.sleep(period)
+        self.update()
+
+    def start(self, period: float = 1.0 / 30.0) -> None:
+        """Update ``1 / period`` times a second in a background thread."""
+        if self._thread is not None:
+            return
+        self._stop.clear()
+
+        def loop() -> None:
+            while not self._stop.wait(period):
+                self.update()
+
+        self._thread = threading.Thread(target=loop, name="rviz", daemon=True)
+        self._thread.start()
+
+    def statuses(self) -> dict[str, dict[str, str]]:
+        """Each display's status lines (RViz's status tree), problems only plus the topic."""
+        return {d.name: dict(d.status) for d in self.displays}
+
+    @property
+    def url(self) -> str:
+        return str(self.meshcat.web_url())
+
+    def save_html(self, path: str | Path) -> Path:
+        """A self-contained HTML snapshot of the view now."""
+        self.update()
+        target = Path(path)
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_text(self.meshcat.StaticHtml(), encoding="utf-8")
+        return target
+
+    def close(self) -> None:
+        """Stop updating, unsubscribe and shut the node down."""
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join(timeout=5)
+            self._thread = None
+        for display in self.displays:
+            display.close()
+        self.node.shutdown()
+
+
+def resolve_mesh(uri: str) -> Path:
+    """A mesh URI (``package://``, ``file://`` or a path) as a file Drake's Meshcat can read.
+
+    Raises:
+        ModelError: Unknown package, missing file or unsupported format.
+    """
+    from workbench.model.meshes import prepare_mesh
+    from workbench.model.packages import PackageResolver
+
+    resolved = PackageResolver(Path.cwd() / "marker").resolve(uri, Path.cwd())
+    return prepare_mesh(resolved)
