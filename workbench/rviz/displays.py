@@ -150,9 +150,8 @@ class LaserScanDisplay(Display):
         ranges = np.asarray(message.ranges, dtype=float)
         angles = message.angle_min + message.angle_increment * np.arange(len(ranges))
         valid = np.isfinite(ranges) & (ranges >= message.range_min) & (ranges <= message.range_max)
-        xyz = np.stack([ranges * np.cos(angles), ranges * np.sin(angles), np.zeros_like(ranges)])[
-            :, valid
-        ]
+        r, a = ranges[valid], angles[valid]
+        xyz = np.stack([r * np.cos(a), r * np.sin(a), np.zeros_like(r)])
         X = _stamped_transform(context, message.header)
         _cloud(context, f"{context.prefix}/{self.path}", xyz, self.size, self.color, X)
 

@@ -90,6 +90,9 @@ def _scale(marker: Any, report: _Report) -> None:
         return  # an arrow's scale.z is the optional head length
     if s.x == 0.0 or s.y == 0.0 or s.z == 0.0:
         report.add("warn", "Scale contains 0.0 in x, y or z.")
+    if s.x < 0.0 or s.y < 0.0 or s.z < 0.0:
+        # not one of RViz's checks (Ogre mirrors the shape); workbench draws the mirror image
+        report.add("warn", "Scale contains a negative value; its absolute value is used.")
 
 
 def _color(marker: Any, report: _Report) -> None:

@@ -65,7 +65,7 @@ def draw_marker(
             mc.CYLINDER: Cylinder(0.5, 1.0),
         }
         meshcat.SetObject(geometry, shape[kind], rgba(marker.color))
-        meshcat.SetProperty(geometry, "scale", [float(s.x), float(s.y), float(s.z)])
+        meshcat.SetProperty(geometry, "scale", [abs(float(s.x)), abs(float(s.y)), abs(float(s.z))])
         return None
     if kind == mc.ARROW:
         return _arrow(meshcat, geometry, marker)

@@ -1,0 +1,58 @@
+"""A Meshcat that remembers what was drawn, and markers to draw."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from workbench.msgs.geometry_msgs import Point
+
+
+def recording_meshcat():
+    """A real Meshcat (127.0.0.1) that also records transforms and objects set from Python."""
+    from pydrake.geometry import Meshcat, MeshcatParams
+
+    class RecordingMeshcat(Meshcat):
+        def __init__(self) -> None:
+            super().__init__(MeshcatParams(host="127.0.0.1"))
+            self.transforms: dict[str, np.ndarray] = {}
+            self.objects: dict[str, object] = {}
+
+        def SetTransform(self, path, X, *args):  # noqa: N802 - Meshcat's name
+            self.transforms[path] = X.GetAsMatrix4()
+            return super().SetTransform(path, X, *args)
+
+        def SetObject(self, path, thing, *args):  # noqa: N802 - Meshcat's name
+            self.objects[path] = thing
+            return super().SetObject(path, thing, *args)
+
+    return RecordingMeshcat()
+
+
+def marker(kind: int, marker_id: int = 0, ns: str = "test", frame: str = "map", **fields):
+    """A valid marker of ``kind`` (points where the type needs them), then ``fields``."""
+    from workbench.msgs.visualization_msgs import Marker
+
+    m = Marker(type=kind, id=marker_id, ns=ns)
+    m.header.frame_id = frame
+    m.pose.orientation.w = 1.0
+    m.scale.x = m.scale.y = m.scale.z = 0.5
+    m.color.r = m.color.a = 1.0
+    if kind in (
+        Marker.LINE_STRIP,
+        Marker.LINE_LIST,
+        Marker.CUBE_LIST,
+        Marker.SPHERE_LIST,
+        Marker.POINTS,
+    ):
+        m.points = [Point(x=0.0, y=0.0, z=0.0), Point(x=1.0, y=0.0, z=0.0)]
+    if kind == Marker.TRIANGLE_LIST:
+        m.points = [
+            Point(x=0.0, y=0.0, z=0.0),
+            Point(x=1.0, y=0.0, z=0.0),
+            Point(x=0.0, y=1.0, z=0.0),
+        ]
+    if kind == Marker.TEXT_VIEW_FACING:
+        m.text = "hello"
+    for key, value in fields.items():
+        setattr(m, key, value)
+    return m
