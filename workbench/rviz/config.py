@@ -99,6 +99,9 @@ def _flatten(entries: Any) -> list[dict[str, Any]]:
 def _options(class_name: str, entry: dict[str, Any]) -> dict[str, Any]:
     if class_name == "Marker":
         return {"topic": entry.get("Marker Topic", "visualization_marker")}
+    if class_name == "InteractiveMarkers":
+        topic = str(entry.get("Update Topic", "basic_controls/update"))
+        return {"topic": topic.rsplit("/update", 1)[0]}
     if class_name == "RobotModel":
         return {"param": entry.get("Robot Description", "robot_description")}
     if class_name == "Grid":

@@ -27,6 +27,7 @@ from typing import Any
 
 from workbench.rviz import displays as stock
 from workbench.rviz.display import Context, Display
+from workbench.rviz.interactive_display import InteractiveMarkerDisplay
 from workbench.rviz.marker_display import MarkerArrayDisplay, MarkerDisplay
 
 #: RViz display class names -> workbench displays.
@@ -37,6 +38,7 @@ DISPLAY_CLASSES: dict[str, type[Display]] = {
     "RobotModel": stock.RobotModelDisplay,
     "Marker": MarkerDisplay,
     "MarkerArray": MarkerArrayDisplay,
+    "InteractiveMarkers": InteractiveMarkerDisplay,
     "LaserScan": stock.LaserScanDisplay,
     "PointCloud2": stock.PointCloud2Display,
     "Map": stock.MapDisplay,
