@@ -249,45 +249,17 @@ class MapDisplay(Display):
         grey = np.where(
             cells < 0, 0.44, 1.0 - np.clip(cells, 0, 100) / 100.0
         )  # RViz: 0 white, 100 black
-        image = _downsample(grey)
+        from pydrake.geometry import Mesh
+
+        from workbench.paths import cache_root
+        from workbench.rviz.texture import write_quad
+
         path = f"{context.prefix}/{self.path}"
-        _image_quad(context.meshcat, path, image, width * resolution, height * resolution)
+        quad = write_quad(cache_root() / "rviz", grey, width * resolution, height * resolution)
+        context.meshcat.SetObject(path + "/image", Mesh(str(quad)))
         X_FM = _stamped_transform(context, message.header).multiply(_pose_transform(info.origin))
         context.meshcat.SetTransform(path, X_FM)
         self.status.pop("Map", None)
-
-
-def _downsample(image: np.ndarray, limit: int = 1024) -> np.ndarray:
-    step = int(np.ceil(max(image.shape) / limit))
-    return image[::step, ::step] if step > 1 else image
-
-
-def _image_quad(meshcat: Any, path: str, grey: np.ndarray, width_m: float, height_m: float) -> None:
-    """A flat grid of coloured cells (two triangles each) from (0, 0) to (width_m, height_m)."""
-    rows, cols = grey.shape
-    ys, xs = np.mgrid[0 : rows + 1, 0 : cols + 1]
-    vertices = np.stack(
-        [xs.ravel() * width_m / cols, ys.ravel() * height_m / rows, np.zeros(xs.size)]
-    )
-    # per-cell colours need their own vertices: build 4 per cell
-    r, c = np.mgrid[0:rows, 0:cols]
-    r, c = r.ravel(), c.ravel()
-    corners = [(0, 0), (0, 1), (1, 1), (1, 0)]
-    verts = np.concatenate(
-        [vertices[:, (r + dr) * (cols + 1) + (c + dc)] for dr, dc in corners], axis=1
-    )
-    n = r.size
-    idx = np.arange(n, dtype=np.int32)
-    faces = np.concatenate(
-        [np.stack([idx, idx + n, idx + 2 * n]), np.stack([idx, idx + 2 * n, idx + 3 * n])], axis=1
-    )
-    colours = np.tile(np.repeat(grey.ravel()[None, :], 3, axis=0), (1, 4))
-    meshcat.SetTriangleColorMesh(
-        path + "/cells",
-        np.asfortranarray(verts),
-        np.asfortranarray(faces),
-        np.asfortranarray(colours),
-    )
 
 
 class PathDisplay(Display):
