@@ -128,15 +128,16 @@ class Message:
         return to_yaml(self)
 
     def __reduce__(self) -> tuple:
-        return (_rebuild, (self._type, tuple(getattr(self, n) for n in self.__slots__)))
+        return (_rebuild, (self._type, tuple(getattr(self, s.name) for s in self._specs)))
 
     def __copy__(self) -> Message:
-        return type(self)._from_wire(*(getattr(self, n) for n in self.__slots__))
+        return type(self)._from_wire(*(getattr(self, s.name) for s in self._specs))
 
     def __deepcopy__(self, memo: dict) -> Message:
         import copy
 
-        values = (copy.deepcopy(getattr(self, n), memo) for n in self.__slots__)
+        # the fields of the message type (a subclass such as rospy.Time adds none)
+        values = (copy.deepcopy(getattr(self, spec.name), memo) for spec in self._specs)
         return type(self)._from_wire(*values)
 
     @classmethod

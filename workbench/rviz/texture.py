@@ -34,7 +34,9 @@ def textured_quad_gltf(png: bytes, width: float, height: float) -> str:
     """
     # glTF is y-up and Drake turns it z-up (a quarter turn about x): the rectangle
     # (x, y) of the z = 0 plane is written as (x, 0, -y).
-    positions = np.array([[0, 0, 0], [width, 0, 0], [width, 0, -height], [0, 0, -height]], np.float32)
+    positions = np.array(
+        [[0, 0, 0], [width, 0, 0], [width, 0, -height], [0, 0, -height]], np.float32
+    )
     texcoords = np.array([[0, 1], [1, 1], [1, 0], [0, 0]], np.float32)
     indices = np.array([0, 1, 2, 0, 2, 3], np.uint16)
     blob = positions.tobytes() + texcoords.tobytes() + indices.tobytes()
