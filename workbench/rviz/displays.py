@@ -221,7 +221,7 @@ def _cloud(
     from pydrake.perception import BaseField, Fields, PointCloud
 
     fields = BaseField.kXYZs | (BaseField.kRGBs if rgb is not None else 0)
-    cloud = PointCloud(xyz.shape[1], Fields(fields))
+    cloud = PointCloud(xyz.shape[1], Fields(fields))  # type: ignore[arg-type]
     cloud.mutable_xyzs()[:] = xyz.astype(np.float32)
     if rgb is not None:
         cloud.mutable_rgbs()[:] = rgb
@@ -256,7 +256,7 @@ class MapDisplay(Display):
 
         path = f"{context.prefix}/{self.path}"
         quad = write_quad(cache_root() / "rviz", grey, width * resolution, height * resolution)
-        context.meshcat.SetObject(path + "/image", Mesh(str(quad)))
+        context.meshcat.SetObject(path + "/image", Mesh(str(quad)))  # type: ignore[call-overload]
         X_FM = _stamped_transform(context, message.header).multiply(_pose_transform(info.origin))
         context.meshcat.SetTransform(path, X_FM)
         self.status.pop("Map", None)
@@ -334,7 +334,8 @@ def _arrow(
 
     marker = Marker(type=0)
     marker.scale.x, marker.scale.y, marker.scale.z = length, 0.05 * length, 0.1 * length
-    marker.color.r, marker.color.g, marker.color.b, marker.color.a = (*colour, 1.0)
+    marker.color.r, marker.color.g, marker.color.b = (float(c) for c in colour)
+    marker.color.a = 1.0
     draw_marker(context.meshcat, path, marker)
     context.meshcat.SetTransform(path, X)
 

@@ -82,7 +82,7 @@ def draw_marker(
     if kind == mc.TEXT_VIEW_FACING:
         from pydrake.geometry import Sphere
 
-        meshcat.SetObject(geometry, Sphere(max(float(s.z), 1e-3) * 0.1), rgba(marker.color))
+        meshcat.SetObject(geometry, Sphere(max(float(s.z), 1e-3) * 0.3), rgba(marker.color))
         return f"text '{marker.text}' shown as a dot: the browser view draws no text"
     return f"Unknown marker type: {kind}."
 
@@ -162,11 +162,11 @@ def _points(meshcat: Any, path: str, marker: Any) -> str | None:
         note = f"{pts.shape[1]} points drawn decimated (every {step}th)"
     pts = pts[:, ::step]
     if marker.colors:
-        cloud = PointCloud(pts.shape[1], Fields(BaseField.kXYZs | BaseField.kRGBs))
+        cloud = PointCloud(pts.shape[1], Fields(BaseField.kXYZs | BaseField.kRGBs))  # type: ignore[arg-type]
         colours = colors_array(marker.colors)[:3, ::step]
         cloud.mutable_rgbs()[:] = np.clip(colours * 255.0, 0, 255).astype(np.uint8)
     else:
-        cloud = PointCloud(pts.shape[1], Fields(BaseField.kXYZs))
+        cloud = PointCloud(pts.shape[1], Fields(BaseField.kXYZs))  # type: ignore[arg-type]
     cloud.mutable_xyzs()[:] = pts.astype(np.float32)
     meshcat.SetObject(f"{path}/points", cloud, max(float(marker.scale.x), 1e-4), rgba(marker.color))
     return note
@@ -279,7 +279,7 @@ def _mesh(
     except Exception as error:  # noqa: BLE001 - a missing mesh is the marker's status
         return f"cannot load mesh {marker.mesh_resource}: {error}"
     colour = rgba(marker.color)
-    meshcat.SetObject(f"{path}/mesh", Mesh(str(file)), colour)
+    meshcat.SetObject(f"{path}/mesh", Mesh(str(file)), colour)  # type: ignore[call-overload]
     meshcat.SetProperty(
         f"{path}/mesh",
         "scale",
@@ -301,4 +301,4 @@ def _rotation_x_to(direction: np.ndarray) -> np.ndarray:
 def _transform(R: np.ndarray, p: np.ndarray) -> Any:
     from pydrake.math import RigidTransform, RotationMatrix
 
-    return RigidTransform(RotationMatrix(R), np.asarray(p, dtype=float))
+    return RigidTransform(RotationMatrix(R), np.asarray(p, dtype=float))  # type: ignore[arg-type]
