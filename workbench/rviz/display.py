@@ -52,6 +52,9 @@ class Display:
     default_topic: str = ""
     #: RViz's name for the display class (the default display name).
     class_name: str = ""
+    #: Draw every message that arrived (sensor streams, as RViz processes each scan),
+    #: not only the newest.
+    draw_every: bool = False
 
     def __init__(
         self, topic: str | None = None, name: str | None = None, queue_size: int = 10
@@ -112,7 +115,11 @@ class Display:
         items = self.take()
         if not items:
             return
-        self.draw_latest(context, items)
+        if self.draw_every:
+            for item in items:
+                self.draw_latest(context, [item])
+        else:
+            self.draw_latest(context, items)
 
     def draw_latest(self, context: Context, items: list[tuple[float, Any]]) -> None:
         from workbench.tf.exceptions import TransformException

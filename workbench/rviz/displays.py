@@ -131,6 +131,7 @@ class LaserScanDisplay(Display):
     """``sensor_msgs/LaserScan`` as points in the fixed frame (default topic ``scan``)."""
 
     class_name = "LaserScan"
+    draw_every = True
 
     message_type = "sensor_msgs/LaserScan"
     default_topic = "scan"
@@ -160,6 +161,7 @@ class PointCloud2Display(Display):
     """``sensor_msgs/PointCloud2`` with x, y, z (and rgb) fields."""
 
     class_name = "PointCloud2"
+    draw_every = True
 
     message_type = "sensor_msgs/PointCloud2"
     default_topic = "points"
@@ -245,10 +247,23 @@ class MapDisplay(Display):
                 "Map is zero-sized" if width * height == 0 else "Resolution is not positive"
             )
             return
-        cells = np.asarray(message.data, dtype=np.int16).reshape(height, width)
-        grey = np.where(
-            cells < 0, 0.44, 1.0 - np.clip(cells, 0, 100) / 100.0
-        )  # RViz: 0 white, 100 black
+        data = message.data
+        raw = (
+            np.frombuffer(bytes(data), dtype=np.int8)
+            if isinstance(data, (bytes, bytearray))
+            else data
+        )
+        cells = np.asarray(raw, dtype=np.int8).reshape(height, width)
+        grey = _MAP_COLOURS[cells.view(np.uint8)]  # RViz "map": 0 white, 100 black, -1 grey
+        factor = int(np.ceil(max(width, height) / MAP_TEXTURE_LIMIT))
+        if factor > 1:
+            grey = _darkest(grey, factor)
+            self.status["Resolution"] = (
+                f"{width}x{height} cells drawn as {grey.shape[1]}x{grey.shape[0]} "
+                "(the darkest cell of each block, so walls stay)"
+            )
+        else:
+            self.status.pop("Resolution", None)
         from pydrake.geometry import Mesh
 
         from workbench.paths import cache_root
@@ -260,6 +275,37 @@ class MapDisplay(Display):
         X_FM = _stamped_transform(context, message.header).multiply(_pose_transform(info.origin))
         context.meshcat.SetTransform(path, X_FM)
         self.status.pop("Map", None)
+
+
+#: Largest map texture side drawn at full resolution (browsers allow 4096 and up).
+MAP_TEXTURE_LIMIT = 2048
+
+
+def _map_colours() -> np.ndarray:
+    """Grey level (0-255) of every int8 cell value, indexed by its byte."""
+    values = np.arange(256, dtype=np.int16)
+    signed = np.where(values > 127, values - 256, values)
+    occupied = np.clip(signed, 0, 100)
+    grey = np.where(signed < 0, 112, 255 - (occupied * 255 + 50) // 100)
+    return grey.astype(np.uint8)
+
+
+_MAP_COLOURS = _map_colours()
+
+
+def _darkest(grey: np.ndarray, factor: int) -> np.ndarray:
+    """Shrink by ``factor`` keeping each block's darkest cell."""
+    rows, cols = grey.shape
+    h, w = -(-rows // factor) * factor, -(-cols // factor) * factor
+    padded = np.full((h, w), 255, np.uint8)
+    padded[:rows, :cols] = grey
+    # factor^2 strided minima: far faster than a reduction over a 4-d view
+    out = padded[0::factor, 0::factor].copy()
+    for dr in range(factor):
+        for dc in range(factor):
+            if dr or dc:
+                np.minimum(out, padded[dr::factor, dc::factor], out=out)
+    return out
 
 
 class PathDisplay(Display):

@@ -5,7 +5,6 @@ from __future__ import annotations
 import argparse
 import logging
 import sys
-import time
 from collections.abc import Sequence
 from typing import Any
 
@@ -79,12 +78,8 @@ def run(args: argparse.Namespace) -> int:
     rviz = build(args, default_bus())
     print(f"[INFO] rviz: {rviz.url} (fixed frame: {rviz.fixed_frame})", flush=True)
     try:
-        if args.after is not None:
-            rviz.spin(max(args.after, 0.0))
-        else:
-            rviz.start()
-            while True:
-                time.sleep(0.5)
+        # Meshcat is driven from this thread (it must be the one that created it)
+        rviz.spin(max(args.after, 0.0) if args.after is not None else float("inf"))
     finally:
         for name, status in rviz.statuses().items():
             problems = {k: v for k, v in status.items() if k != "Topic" or v != "OK"}

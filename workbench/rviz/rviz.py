@@ -5,7 +5,7 @@ Example (in a notebook or a script)::
     from workbench.rviz import RViz, displays
 
     rviz = RViz(bus, fixed_frame="map", displays=[displays.GridDisplay(), "Marker"])
-    rviz.spin(2.0)                  # or rviz.start(): redraw 30 times a second
+    rviz.spin(2.0)                  # redraw 30 times a second for 2 s
     print(rviz.url)                 # open it in a browser
     rviz.save_html("view.html")
 
@@ -92,8 +92,6 @@ class RViz:
         # and 45 degrees round; Meshcat's own grid gives way to the Grid display.
         meshcat.SetCameraPose([5.0, 5.0, 7.07], [0.0, 0.0, 0.0])
         meshcat.SetProperty("/Grid", "visible", False)
-        self._thread: threading.Thread | None = None
-        self._stop = threading.Event()
         self._lock = threading.Lock()
         self.updates = 0
 
@@ -159,25 +157,16 @@ class RViz:
             self.updates += 1
 
     def spin(self, seconds: float, period: float = 1.0 / 30.0) -> None:
-        """Update for ``seconds`` of wall time (a notebook's or a test's loop)."""
+        """Update for ``seconds`` of wall time (a notebook's or a test's loop).
+
+        Drake's Meshcat may only be called from the thread that created it, so the
+        viewer is updated from that thread: here, or by calling :meth:`update`.
+        """
         end = time.monotonic() + seconds
         while time.monotonic() < end:
             self.update()
             time.sleep(period)
         self.update()
-
-    def start(self, period: float = 1.0 / 30.0) -> None:
-        """Update ``1 / period`` times a second in a background thread."""
-        if self._thread is not None:
-            return
-        self._stop.clear()
-
-        def loop() -> None:
-            while not self._stop.wait(period):
-                self.update()
-
-        self._thread = threading.Thread(target=loop, name="rviz", daemon=True)
-        self._thread.start()
 
     def statuses(self) -> dict[str, dict[str, str]]:
         """Each display's status lines (RViz's status tree), problems only plus the topic."""
@@ -196,11 +185,7 @@ class RViz:
         return target
 
     def close(self) -> None:
-        """Stop updating, unsubscribe and shut the node down."""
-        self._stop.set()
-        if self._thread is not None:
-            self._thread.join(timeout=5)
-            self._thread = None
+        """Unsubscribe and shut the node down."""
         for display in self.displays:
             display.close()
         self.node.shutdown()

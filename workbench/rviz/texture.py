@@ -17,10 +17,12 @@ import numpy as np
 
 
 def png_bytes(grey: np.ndarray) -> bytes:
-    """PNG of a greyscale image with values in [0, 1]; row 0 is the image's top."""
+    """PNG of a greyscale image (uint8, or floats in [0, 1]); row 0 is the image's top."""
     from PIL import Image
 
-    image = Image.fromarray(np.clip(grey * 255.0 + 0.5, 0, 255).astype(np.uint8), mode="L")
+    if grey.dtype != np.uint8:
+        grey = np.clip(grey * 255.0 + 0.5, 0, 255).astype(np.uint8)
+    image = Image.fromarray(np.ascontiguousarray(grey), mode="L")
     out = io.BytesIO()
     image.save(out, format="PNG", compress_level=1)
     return out.getvalue()

@@ -142,9 +142,19 @@ class SimServer:
         return future.result(timeout=timeout)
 
     def start(self, until: float | None = None) -> None:
-        """Run the loop in a background thread (see :meth:`run`)."""
+        """Run the loop in a background thread (see :meth:`run`).
+
+        Raises:
+            SimulationError: The world draws in a Meshcat: Drake's Meshcat may only be
+                called from the thread that created it, so use :meth:`run` there.
+        """
         if self._loop_thread is not None:
             return
+        if self.world.meshcat is not None:
+            raise SimulationError(
+                "a server that draws in Meshcat must run in the thread that created the Meshcat",
+                hint="call server.run() from that thread",
+            )
         ready = threading.Event()
 
         def target() -> None:
