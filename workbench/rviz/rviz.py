@@ -176,6 +176,10 @@ class RViz:
     def url(self) -> str:
         return str(self.meshcat.web_url())
 
+    def _repr_html_(self) -> str:
+        """Jupyter shows the live view inline (the Meshcat page in an iframe)."""
+        return f'<iframe src="{self.url}" width="100%" height="480" style="border:0"></iframe>'
+
     def save_html(self, path: str | Path) -> Path:
         """A self-contained HTML snapshot of the view now."""
         self.update()
