@@ -32,6 +32,10 @@ Visualization Manager:
       Name: Controls
       Enabled: true
       Update Topic: /simple_marker/update
+    - Class: rviz/InteractiveMarkers
+      Name: Basic
+      Enabled: true
+      Update Topic: /basic_controls/update
     - Class: rviz/Camera
       Name: Camera
       Enabled: true
@@ -83,6 +87,7 @@ def test_the_manual_programs_draw_in_workbench_rviz(tmp_path):
         _started(["run", "using_markers", "basic_shapes.py"], uri, tmp_path, "shapes.log"),
         _started(["run", "using_markers", "simple_marker.py"], uri, tmp_path, "simple.log"),
         _started(["run", "using_markers", "points_and_lines.py"], uri, tmp_path, "lines.log"),
+        _started(["run", "using_markers", "basic_controls.py"], uri, tmp_path, "basic.log"),
     ):
         time.sleep(3)
         done = subprocess.run(
@@ -97,6 +102,8 @@ def test_the_manual_programs_draw_in_workbench_rviz(tmp_path):
     assert "/rviz/Shapes/basic_shapes/0" in paths  # the cycling shape
     assert {f"/rviz/Shapes/points_and_lines/{i}" for i in range(3)} <= paths
     assert any(p.startswith("/rviz/Controls/my_marker") for p in paths)
+    for name in ("simple_6dof", "quadrocopter", "chess_piece", "context_menu", "button", "mesh"):
+        assert any(p.startswith(f"/rviz/Basic/{name}/") for p in paths), name
     assert "Please create a subscriber to the marker" in (tmp_path / "shapes.log").read_text()
 
 

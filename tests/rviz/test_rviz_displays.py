@@ -193,3 +193,54 @@ def test_the_fixed_frame_defaults_to_map_else_the_tf_root(scene):
         time.sleep(0.01)
     assert rviz.fixed_frame == "map"
     rviz.close()
+
+
+def test_an_rviz_config_gives_its_displays_and_the_robot_is_drawn_where_tf_says(scene):
+    from types import SimpleNamespace
+
+    from workbench.model import load_robot
+    from workbench.msgs.sensor_msgs import JointState
+    from workbench.paths import examples_dir, urdf_dir
+    from workbench.robot_state.state_publisher import RobotStatePublisher
+    from workbench.rviz.node import build
+
+    bus, node, meshcat = scene
+    node.set_param("robot_description", (urdf_dir() / "arm3.urdf").read_text())
+    args = SimpleNamespace(
+        display_config=str(examples_dir() / "rviz" / "lab.rviz"), fixed_frame=None, port=None
+    )
+    rviz = build(args, bus, meshcat)
+    assert rviz.fixed_frame == "map"
+    assert [d.name for d in rviz.displays] == [
+        "Grid", "TF", "RobotModel", "LaserScan", "Map", "Marker", "MarkerArray",
+        "InteractiveMarkers", "Path",
+    ]  # fmt: skip
+    assert (
+        rviz.displays[3].topic == "/scan" and rviz.displays[8].topic == "/move_base/NavfnROS/plan"
+    )
+    robot = load_robot("arm3")
+    publisher = RobotStatePublisher(robot, node=Node("robot_state_publisher", bus=bus))
+    t = TransformStamped()
+    t.header.frame_id, t.child_frame_id = "map", robot.root_link
+    t.transform.translation.y = -3.0
+    t.transform.rotation.w = 1.0
+    StaticTransformBroadcaster(node).sendTransform(t)
+    q = [0.3, -0.4, 0.5][: len(robot.joint_names)]
+    joint_states = node.create_publisher("joint_states", JointState)
+    deadline = time.monotonic() + 10
+    drawn = rviz.displays[2]
+    while time.monotonic() < deadline:
+        joint_states.publish(JointState(name=robot.joint_names, position=q))
+        rviz.update()
+        if drawn.status == {} and drawn.drawn:
+            break
+        time.sleep(0.05)
+    assert drawn.status == {}, drawn.status
+    fk = robot.forward_kinematics(q)
+    tip = robot.links[-1].name
+    expected = fk[tip].translation() + np.array([0.0, -3.0, 0.0])
+    drawn_at = [X[:3, 3] for path, X in meshcat.transforms.items() if path.endswith(f"/{tip}")]
+    assert drawn_at, (tip, sorted(meshcat.transforms)[:12])
+    np.testing.assert_allclose(drawn_at[-1], expected, atol=1e-6)
+    del publisher
+    rviz.close()

@@ -38,7 +38,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def build(args: argparse.Namespace, bus: Any = None) -> Any:
+def build(args: argparse.Namespace, bus: Any = None, meshcat: Any = None) -> Any:
     """The :class:`~workbench.rviz.RViz` the options describe.
 
     Raises:
@@ -58,8 +58,7 @@ def build(args: argparse.Namespace, bus: Any = None) -> Any:
         displays = []
         if config.unknown:
             _LOG.warning("not drawn here (unknown display classes): %s", ", ".join(config.unknown))
-    meshcat = None
-    if args.port:
+    if meshcat is None and args.port:
         from workbench.viz import Viewer
 
         meshcat = Viewer(port=args.port).meshcat
