@@ -125,3 +125,13 @@ def run_notebook(tmp_path, monkeypatch):
         return ExecutedNotebook(notebook)
 
     return _run
+
+
+@pytest.fixture
+def free_uri() -> str:
+    """A ``tcp/127.0.0.1:PORT`` core address on a port free right now."""
+    import socket
+
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return f"tcp/127.0.0.1:{sock.getsockname()[1]}"

@@ -5,7 +5,6 @@ from __future__ import annotations
 import contextlib
 import os
 import signal
-import socket
 import subprocess
 import sys
 import time
@@ -45,12 +44,6 @@ Visualization Manager:
 """
 
 
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return sock.getsockname()[1]
-
-
 def _env(uri: str) -> dict[str, str]:
     env = dict(os.environ, WORKBENCH_MASTER_URI=uri, PYTHONUNBUFFERED="1")
     env.pop("WORKBENCH_DEBUG", None)
@@ -79,8 +72,8 @@ def _started(args: list[str], uri: str, cwd: Path, log_name: str):
 
 @pytest.mark.multiprocess
 @pytest.mark.slow
-def test_the_manual_programs_draw_in_workbench_rviz(tmp_path):
-    uri = f"tcp/127.0.0.1:{_free_port()}"
+def test_the_manual_programs_draw_in_workbench_rviz(tmp_path, free_uri):
+    uri = free_uri
     (tmp_path / "lab.rviz").write_text(CONFIG)
     with (
         _started(["core"], uri, tmp_path, "core.log"),

@@ -13,7 +13,6 @@ from __future__ import annotations
 import contextlib
 import os
 import signal
-import socket
 import subprocess
 import sys
 import time
@@ -25,12 +24,6 @@ from workbench.bus import Bus, Node
 from workbench.msgs import gazebo_msgs as gm
 from workbench.paths import urdf_dir
 from workbench.viz.snapshot import snapshot_paths
-
-
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return sock.getsockname()[1]
 
 
 def _env(uri: str) -> dict[str, str]:
@@ -101,8 +94,8 @@ def _wait_sim_time(bus: Bus, seconds: float) -> None:
 
 @pytest.mark.multiprocess
 @pytest.mark.slow
-def test_additional_experiment_1_command_lines(tmp_path):
-    uri = f"tcp/127.0.0.1:{_free_port()}"
+def test_additional_experiment_1_command_lines(tmp_path, free_uri):
+    uri = free_uri
     (tmp_path / "object.urdf").write_text((urdf_dir() / "simple_box.urdf").read_text())
     with _background(
         ["launch", "gazebo_worlds", "empty_world.launch", "gui:=false"],
@@ -167,8 +160,8 @@ def test_additional_experiment_1_command_lines(tmp_path):
 
 @pytest.mark.multiprocess
 @pytest.mark.parametrize("source", ["world", "urdf"])
-def test_the_ros_talking_plugin_follows_topic_pub(tmp_path, source):
-    uri = f"tcp/127.0.0.1:{_free_port()}"
+def test_the_ros_talking_plugin_follows_topic_pub(tmp_path, source, free_uri):
+    uri = free_uri
     server = ["sim", "velodyne", "--headless"] if source == "world" else ["sim", "--headless"]
     with _background(server, uri, tmp_path, "services ready") as (_, log):
         if source == "urdf":

@@ -127,25 +127,33 @@ class TFDisplay(Display):
         self.drawn += 1
 
 
-class LaserScanDisplay(Display):
-    """``sensor_msgs/LaserScan`` as points in the fixed frame (default topic ``scan``)."""
+class _PointsDisplay(Display):
+    """A sensor stream drawn as points of ``size`` (m) and ``color`` (r, g, b), every message."""
 
-    class_name = "LaserScan"
     draw_every = True
-
-    message_type = "sensor_msgs/LaserScan"
-    default_topic = "scan"
+    default_size = 0.01
+    default_color: tuple[float, float, float] = (1.0, 1.0, 1.0)
 
     def __init__(
         self,
         topic: str | None = None,
-        size: float = 0.03,
-        color=(1.0, 0.0, 0.0),
+        size: float | None = None,
+        color: tuple[float, float, float] | None = None,
         name: str | None = None,
     ) -> None:
         super().__init__(topic, name)
-        self.size = size
-        self.color = color
+        self.size = size if size is not None else self.default_size
+        self.color = color if color is not None else self.default_color
+
+
+class LaserScanDisplay(_PointsDisplay):
+    """``sensor_msgs/LaserScan`` as points in the fixed frame (default topic ``scan``)."""
+
+    class_name = "LaserScan"
+    message_type = "sensor_msgs/LaserScan"
+    default_topic = "scan"
+    default_size = 0.03
+    default_color = (1.0, 0.0, 0.0)
 
     def draw(self, context: Context, message: Any) -> None:
         ranges = np.asarray(message.ranges, dtype=float)
@@ -157,25 +165,12 @@ class LaserScanDisplay(Display):
         _cloud(context, f"{context.prefix}/{self.path}", xyz, self.size, self.color, X)
 
 
-class PointCloud2Display(Display):
+class PointCloud2Display(_PointsDisplay):
     """``sensor_msgs/PointCloud2`` with x, y, z (and rgb) fields."""
 
     class_name = "PointCloud2"
-    draw_every = True
-
     message_type = "sensor_msgs/PointCloud2"
     default_topic = "points"
-
-    def __init__(
-        self,
-        topic: str | None = None,
-        size: float = 0.01,
-        color=(1.0, 1.0, 1.0),
-        name: str | None = None,
-    ) -> None:
-        super().__init__(topic, name)
-        self.size = size
-        self.color = color
 
     def draw(self, context: Context, message: Any) -> None:
         xyz, rgb = cloud_arrays(message)
