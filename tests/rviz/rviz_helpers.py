@@ -6,9 +6,30 @@ import numpy as np
 
 from workbench.msgs.geometry_msgs import Point
 
+_MESHCAT = None
+
 
 def recording_meshcat():
-    """A real Meshcat (127.0.0.1) that also records transforms and objects set from Python."""
+    """A real Meshcat (127.0.0.1) that also records transforms and objects set from Python.
+
+    One per test process, emptied for each caller: Drake's Meshcat must be destroyed
+    on the thread that made it, and a viewer freed by the garbage collector on a bus
+    thread would abort the process.
+    """
+    global _MESHCAT
+    if _MESHCAT is None:
+        _MESHCAT = _make_recording_meshcat()
+    _MESHCAT.Delete()
+    for name in _MESHCAT.GetSliderNames():
+        _MESHCAT.DeleteSlider(name)
+    for name in _MESHCAT.GetButtonNames():
+        _MESHCAT.DeleteButton(name)
+    _MESHCAT.transforms.clear()
+    _MESHCAT.objects.clear()
+    return _MESHCAT
+
+
+def _make_recording_meshcat():
     from pydrake.geometry import Meshcat, MeshcatParams
 
     class RecordingMeshcat(Meshcat):

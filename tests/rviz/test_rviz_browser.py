@@ -10,6 +10,16 @@ from workbench.msgs.visualization_msgs import Marker
 from workbench.rviz.marker_draw import draw_marker
 from workbench.rviz.rviz import resolve_mesh
 
+_KEPT: list = []
+
+
+def _meshcat(meshcat_class, params_class):
+    """A Meshcat kept for the process's life (one must be destroyed on its own thread)."""
+    if not _KEPT:
+        _KEPT.append(meshcat_class(params_class(host="127.0.0.1")))
+    _KEPT[0].Delete()
+    return _KEPT[0]
+
 
 @pytest.mark.browser
 def test_each_marker_type_changes_the_render(require_program, tmp_path):
@@ -20,7 +30,7 @@ def test_each_marker_type_changes_the_render(require_program, tmp_path):
     from workbench.viz.render import render_png
 
     require_program("chromium")
-    meshcat = Meshcat(MeshcatParams(host="127.0.0.1"))
+    meshcat = _meshcat(Meshcat, MeshcatParams)
     meshcat.SetCameraPose([2.0, 2.0, 2.0], [0.0, 0.0, 0.0])
     meshcat.SetProperty("/Grid", "visible", False)
     meshcat.SetProperty("/Axes", "visible", False)

@@ -11,11 +11,21 @@ from workbench.sim.server import SERVER_PHYSICS, SimServer
 from workbench.sim.view import LiveView
 from workbench.viz.snapshot import snapshot_paths
 
+_KEPT: list = []
+
+
+def _kept_meshcat(meshcat_class, params_class):
+    """One Meshcat for the process's life: Drake's must be destroyed on its own thread."""
+    if not _KEPT:
+        _KEPT.append(meshcat_class(params_class(host="127.0.0.1")))
+    _KEPT[0].Delete()
+    return _KEPT[0]
+
 
 def test_the_view_adds_its_buttons_shows_the_speed_and_records(tmp_path):
     from pydrake.geometry import Meshcat, MeshcatParams
 
-    meshcat = Meshcat(MeshcatParams(host="127.0.0.1"))
+    meshcat = _kept_meshcat(Meshcat, MeshcatParams)
     world = World(**SERVER_PHYSICS)
     world.add_model(box_model("crate"), [0.0, 0.0, 1.0])
     view = LiveView(world, meshcat, contacts=True, record=True)
@@ -42,4 +52,4 @@ def test_a_view_on_a_built_world_is_refused():
     world = World(**SERVER_PHYSICS)
     world.build()
     with pytest.raises(SimulationError, match="before the world is built"):
-        LiveView(world, Meshcat(MeshcatParams(host="127.0.0.1")))
+        LiveView(world, _kept_meshcat(Meshcat, MeshcatParams))
