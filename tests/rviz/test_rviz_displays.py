@@ -66,8 +66,9 @@ def test_replace_delete_and_status_lines_reach_the_view(scene):
     nan = marker(Marker.CUBE, 5)
     nan.pose.position.z = float("nan")
     lost = marker(Marker.CUBE, 6, frame="nowhere")
+    mesh = marker(Marker.MESH_RESOURCE, 7, mesh_resource="package://workbench_urdf/meshes/gone.stl")
     publisher.publish(
-        MarkerArray(markers=[marker(Marker.CUBE, 1), marker(Marker.SPHERE, 2), nan, lost])
+        MarkerArray(markers=[marker(Marker.CUBE, 1), marker(Marker.SPHERE, 2), nan, lost, mesh])
     )
     _settle(rviz, display)
     assert meshcat.HasPath("/rviz/MarkerArray/test/1") and meshcat.HasPath(
@@ -75,6 +76,9 @@ def test_replace_delete_and_status_lines_reach_the_view(scene):
     )
     assert not meshcat.HasPath("/rviz/MarkerArray/test/5")
     assert display.status["test/5"].startswith("Position contains invalid floating point values")
+    assert display.status.get("test/7", "").startswith(
+        "cannot load mesh package://workbench_urdf/meshes/gone.stl"
+    ), display.status
     publisher.publish(MarkerArray(markers=[marker(Marker.CUBE, 1, action=Marker.DELETE)]))
     _settle(rviz, display, 2)
     assert not meshcat.HasPath("/rviz/MarkerArray/test/1")
@@ -182,6 +186,18 @@ def test_a_topic_of_another_type_and_an_unknown_display_are_reported(scene):
     assert rviz.displays[0].status["Topic"].startswith("Error subscribing:")
     with pytest.raises(ViewerError, match="unknown display class 'Camera'"):
         rviz.add_display("Camera")
+    rviz.close()
+
+
+def test_tf_frames_and_their_parent_lines_are_drawn(scene):
+    bus, node, meshcat = scene
+    rviz = RViz(bus, fixed_frame="map", displays=["TF"], meshcat=meshcat)
+    deadline = time.monotonic() + 5
+    while not meshcat.HasPath("/rviz/TF/arrows") and time.monotonic() < deadline:
+        rviz.update()
+        time.sleep(0.02)
+    np.testing.assert_allclose(meshcat.transforms["/rviz/TF/frames/base_link"][:3, 3], [2.0, 0, 0])
+    assert meshcat.HasPath("/rviz/TF/arrows")
     rviz.close()
 
 

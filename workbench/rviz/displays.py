@@ -96,7 +96,10 @@ class AxesDisplay(Display):
 
 
 class TFDisplay(Display):
-    """Every tf frame as a triad in the fixed frame (RViz's TF display)."""
+    """Every tf frame as a triad in the fixed frame, and a line from each frame to its parent.
+
+    RViz also writes the frame names; Meshcat draws no text, so names are left out.
+    """
 
     class_name = "TF"
 
@@ -111,9 +114,13 @@ class TFDisplay(Display):
 
         with context.buffer._lock:
             frames = context.buffer.get_frame_strings()
+            parents = {
+                child: entry["parent"] for child, entry in context.buffer.frames_info().items()
+            }
         problems = {}
+        origins: dict[str, np.ndarray] = {}
         for frame in frames:
-            path = f"{context.prefix}/{self.path}/{frame}"
+            path = f"{context.prefix}/{self.path}/frames/{frame}"
             try:
                 X = context.transform(frame)
             except TransformException as error:
@@ -123,6 +130,18 @@ class TFDisplay(Display):
                 add_triad(context.meshcat, path, self.scale, self.scale * 0.03)
                 self._shown.add(frame)
             context.meshcat.SetTransform(path, X)
+            origins[frame] = X.translation()
+        pairs = [(c, p) for c, p in parents.items() if c in origins and p in origins]
+        if pairs:
+            starts = np.array([origins[c] for c, _ in pairs]).T
+            ends = np.array([origins[p] for _, p in pairs]).T
+            context.meshcat.SetLineSegments(
+                f"{context.prefix}/{self.path}/arrows",
+                np.asfortranarray(starts),
+                np.asfortranarray(ends),
+                2.0,
+                _rgba((1.0, 0.9, 0.2)),
+            )
         self.status = problems
         self.drawn += 1
 
