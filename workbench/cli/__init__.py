@@ -113,6 +113,11 @@ def main(argv: Sequence[str] | None = None) -> int:
             return 128 + signal.SIGTERM
         except KeyboardInterrupt:
             return 128 + signal.SIGINT
+        except BrokenPipeError:  # `workbench ... | head`: the reader left; finish quietly
+            from workbench.cli.signals import silence_stdout
+
+            silence_stdout()
+            return 0
     if stop.exit_status is not None and status == 0:
         # The command caught the interrupt and finalised: report how it was stopped.
         return stop.exit_status

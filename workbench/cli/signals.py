@@ -105,3 +105,19 @@ def stop_event_on_signals(event: threading.Event) -> Iterator[None]:
 
     with _handlers(handler):
         yield
+
+
+def silence_stdout() -> None:
+    """Point stdout at /dev/null after its reader went away (``| head``).
+
+    Later writes, and Python's flush at exit, then go nowhere instead of raising
+    BrokenPipeError again; the command finishes quietly, as shell tools do.
+    """
+    import sys
+
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError):
+        pass

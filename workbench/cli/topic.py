@@ -273,7 +273,14 @@ def _echo(node: Any, path: str, count: int | None, noarr: bool, timeout: float |
                 state["error"] = error
                 done.set()
                 return
-            print(format_echo(value, noarr=noarr), flush=True)
+            try:
+                print(format_echo(value, noarr=noarr), flush=True)
+            except BrokenPipeError:  # `| head`: the reader is gone, stop as a shell tool does
+                from workbench.cli.signals import silence_stdout
+
+                silence_stdout()
+                done.set()
+                return
             state["count"] += 1
             if count is not None and state["count"] >= count:
                 done.set()
