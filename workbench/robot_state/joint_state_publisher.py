@@ -9,6 +9,7 @@ ROS does: their positions override the defaults for the joints they name.
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Iterable, Mapping
 from typing import Any
 
@@ -76,6 +77,7 @@ class JointStatePublisher:
         self.pub = node.create_publisher("joint_states", JointState, queue_size=10)
         self.viewer = None
         self._sliders: dict[str, str] = {}
+        self._gui_thread: int | None = None
         if use_gui:
             self._start_gui(viewer)
         self.sources = [
@@ -92,6 +94,8 @@ class JointStatePublisher:
 
             viewer = Viewer.instance()
         self.viewer = viewer
+        # Drake's Meshcat answers only the thread that created it: remember which one
+        self._gui_thread = threading.get_ident()
         q = self.robot.positions_from(self.positions)
         prefix = viewer.show_robot(self.robot, q)
         for slider, joint in zip(
@@ -110,13 +114,23 @@ class JointStatePublisher:
             self.robot.positions_from({name: value})
         self.positions[name] = float(value)
 
+    def poll_gui(self) -> None:
+        """Read the sliders into the positions; call it from the thread that made the viewer.
+
+        A node with sliders calls this in its main loop; :meth:`message` calls it too
+        when it runs on that thread (a timer on the bus's threads cannot reach Meshcat).
+        """
+        if self.viewer is None:
+            return
+        for slider, value in self.viewer.poll_sliders().items():
+            joint = self._sliders.get(slider)
+            if joint is not None:
+                self.positions[joint] = value
+
     def message(self) -> Any:
         """The JointState to publish now (stamped with the node's clock)."""
-        if self.viewer is not None:
-            for slider, value in self.viewer.poll_sliders().items():
-                joint = self._sliders.get(slider)
-                if joint is not None:
-                    self.positions[joint] = value
+        if self.viewer is not None and threading.get_ident() == self._gui_thread:
+            self.poll_gui()
         msg = self._message()
         msg.header.stamp = self.node.now()
         msg.name = list(self.names)

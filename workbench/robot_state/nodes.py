@@ -11,6 +11,7 @@ XML in ``robot_description``. The nodes are declared as entry points of the
 
 from __future__ import annotations
 
+import time
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
@@ -78,9 +79,14 @@ def _joint_state_publisher(argv: Sequence[str], gui: bool) -> int:
         use_gui=gui or bool(node.get_param("~use_gui", False)),
         source_list=node.get_param("~source_list", []) or [],
     )
-    if jsp.viewer is not None:
-        node.get_logger().info(f"joint sliders at {jsp.viewer.url}")
-    node.bus.spin()
+    if jsp.viewer is None:
+        node.bus.spin()
+        return 0
+    node.get_logger().info(f"joint sliders at {jsp.viewer.url}")
+    # The sliders live in Meshcat, which answers only this thread: poll them here.
+    while not node.is_shutdown:
+        jsp.poll_gui()
+        time.sleep(0.02)
     return 0
 
 
