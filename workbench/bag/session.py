@@ -180,6 +180,7 @@ def play(
                 queue_size=1000,
                 latch=conn.latching,
             )
+            publishers[conn.topic].number_headers = False  # rosbag play keeps the recorded seq
     clock_pub = None
     if clock:
         clock_pub = node.create_publisher("/clock", get_type("rosgraph_msgs/Clock"), queue_size=10)

@@ -129,6 +129,9 @@ class Publisher:
         self._clock = node.bus.clock
         self._has_header = bool(getattr(data_class, "_has_header", False))
         self._seq = 0
+        #: Number ``header.seq`` of each message as rospy does (False: send it as given,
+        #: as ``rosbag play`` does with recorded messages).
+        self.number_headers = True
 
     def publish(self, *args: Any, **kwargs: Any) -> None:
         """Publish a message, or build one from the arguments (``pub.publish("hello")``).
@@ -143,7 +146,7 @@ class Publisher:
             msg = self._coerce(args, kwargs)
         if self.closed:
             raise ShutdownError(f"publisher on {self.topic} is closed (its node shut down)")
-        if self._has_header:  # rospy numbers the messages of a publisher
+        if self._has_header and self.number_headers:  # rospy numbers its messages
             self._seq += 1
             msg.header.seq = self._seq & 0xFFFFFFFF  # type: ignore[attr-defined]
         if self.latch:
