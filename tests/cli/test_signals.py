@@ -283,12 +283,12 @@ def test_sim_stops_from_a_background_job_and_writes_its_recording(tmp_path, sig)
 @pytest.mark.multiprocess
 def test_topic_echo_into_head_ends_quietly(tmp_path, free_uri):
     """`workbench topic echo ... | head -3` prints three lines and exits, no tracebacks."""
-    script = f"""
+    script = """
 "$PY" -m workbench core > core.log 2>&1 &
 for _ in $(seq 300); do grep -q 'started core' core.log && break; sleep 0.1; done
 "$PY" -m workbench topic pub -r 50 /chatter std_msgs/String "data: hi" > pub.log 2>&1 &
 timeout 60 "$PY" -m workbench topic echo /chatter 2> echo.err | head -3 > head.out
-echo "status=${{PIPESTATUS[0]}}"
+echo "status=${PIPESTATUS[0]}"
 kill %1 %2
 """
     env = dict(os.environ, PY=sys.executable, WORKBENCH_MASTER_URI=free_uri, PYTHONUNBUFFERED="1")

@@ -47,6 +47,27 @@ def to_ns(stamp: Any) -> int:
     raise TypeError(f"cannot use {stamp!r} as a time (give seconds, nanoseconds or a Time)")
 
 
+def roslz4_frame(data: bytes) -> bytes:
+    """An LZ4 frame as ROS's roslz4 writes and reads it.
+
+    roslz4 (ros_comm 1.15) writes independent 1 MB blocks with a content checksum
+    and no content size, and refuses frames that differ (the lz4 package's
+    default frame carries the content size: "malformed data to decompress").
+    """
+    import lz4.frame
+
+    return bytes(
+        lz4.frame.compress(
+            data,
+            compression_level=0,
+            block_size=lz4.frame.BLOCKSIZE_MAX1MB,
+            block_linked=False,
+            content_checksum=True,
+            store_size=False,
+        )
+    )
+
+
 class BagWriter:
     """Write messages to a ROS 1 bag.
 
@@ -103,6 +124,8 @@ class BagWriter:
         writer = _RosbagsWriter(self.active_path)
         if self.compression != "none":
             writer.set_compression(_RosbagsWriter.CompressionFormat[self.compression.upper()])
+            if self.compression == "lz4":
+                writer.compressor = roslz4_frame
         writer.chunk_threshold = self.chunk_size
         try:
             writer.open()
