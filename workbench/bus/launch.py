@@ -106,7 +106,7 @@ def find_package(name: str, near: Path | None = None) -> Path:
     if near is not None:
         roots += [near, *near.parents][:4]
     # examples/packages holds the ROS packages the labs' launch files name (gazebo_ros ...).
-    roots += [Path.cwd(), project_root(), examples_dir() / "packages"]
+    roots += [Path.cwd(), project_root(), examples_dir(), examples_dir() / "packages"]
     seen: set[Path] = set()
     for root in roots:
         if root in seen or not root.is_dir():

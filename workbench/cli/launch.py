@@ -21,6 +21,16 @@ def run(args: argparse.Namespace) -> int:
     return launch(path, values, uri=args.uri, dry_run=args.dry_run)
 
 
+def _shipped_launch_file(name: str) -> Path | None:
+    """A launch file of the lab's shipped packages (``start_demo.launch``), when just one has it."""
+    from workbench.paths import examples_dir
+
+    found = sorted(examples_dir().glob(f"*/{name}")) + sorted(
+        examples_dir().glob(f"packages/*/launch/{name}")
+    )
+    return found[0] if len(found) == 1 else None
+
+
 def split_target(target: list[str]) -> tuple[Path, dict[str, str]]:
     """The launch file and the ``arg:=value`` settings of ``FILE`` or ``PACKAGE FILE`` words.
 
@@ -32,7 +42,10 @@ def split_target(target: list[str]) -> tuple[Path, dict[str, str]]:
     words = [w for w in target if ":=" not in w]
     values = dict(w.split(":=", 1) for w in target if ":=" in w)
     if len(words) == 1:
-        return Path(words[0]), values
+        path = Path(words[0])
+        if not path.exists() and path.name == words[0]:
+            path = _shipped_launch_file(words[0]) or path
+        return path, values
     if len(words) == 2:
         package = find_package(words[0])
         for candidate in (package / "launch" / words[1], package / words[1]):
