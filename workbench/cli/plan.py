@@ -13,6 +13,7 @@ first (``workbench setup ROBOT``) and says so.
 from __future__ import annotations
 
 import argparse
+from collections.abc import Sequence
 from pathlib import Path
 
 
@@ -41,7 +42,11 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--scene", metavar="FILE", help="obstacles: a YAML file or a name in planning/scenes/"
     )
-    parser.add_argument("--seed", type=int, default=0, help="seed of planner, random goal and IK")
+    parser.add_argument(
+        "--seed",
+        type=int,
+        help="seed of planner, random goal and IK (default: a fresh one, printed to repeat the run)",
+    )
     parser.add_argument("--time-limit", type=float, metavar="S", help="planning time limit (s)")
     parser.add_argument(
         "--config",
@@ -56,14 +61,26 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    seed = args.seed
+    if seed is None:
+        # like MoveIt's "random valid", a new draw each run; printed so it can be repeated
+        import secrets
+
+        seed = secrets.randbelow(2**31)
+    start = args.start
+    notes = [] if args.seed is not None else [f"seed: {seed} (repeat this run with --seed {seed})"]
+    if start is None and args.to == "home":
+        # the default start is home too: a plan to home starts somewhere else
+        start = "random"
+        notes.append("start: random (the goal is home, the default start)")
     return plan(
         args.robot,
         args.to,
-        start=args.start,
+        start=start,
         group=args.group,
         planner=args.planner,
         scene=args.scene,
-        seed=args.seed,
+        seed=seed,
         time_limit=args.time_limit,
         config_dir=args.config,
         execute=args.execute,
@@ -71,6 +88,7 @@ def run(args: argparse.Namespace) -> int:
         plot=args.plot,
         json_out=args.json,
         csv_out=args.csv,
+        notes=notes,
     )
 
 
@@ -151,6 +169,7 @@ def plan(
     plot: str | None = None,
     json_out: str | None = None,
     csv_out: str | None = None,
+    notes: Sequence[str] = (),
 ) -> int:
     """Plan, time and re-check a motion of ``robot`` to ``goal``; optionally execute it.
 
@@ -174,6 +193,7 @@ def plan(
         html: Write a Meshcat snapshot with the animation here.
         plot: Write a PNG of q, qd, qdd against the limits here.
         json_out, csv_out: Write the trajectory as JSON / CSV here.
+        notes: Lines printed once the request is valid (the seed drawn, the start chosen).
 
     Raises:
         PlanningError: The request is invalid or no plan was found (a subclass says which).
@@ -202,6 +222,8 @@ def plan(
     from workbench.planning.pipeline import MotionPlanner
 
     motion = MotionPlanner(config=config, scene=obstacles, group=group)
+    for note in notes:
+        print(note)
     result = motion.plan(goal, start=start, planner=planner, time_limit=time_limit, seed=seed)
     print(f"plan for '{motion.robot.name}' group '{motion.group}' to {goal}")
     print(summary_table(result))
