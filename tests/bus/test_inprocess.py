@@ -271,3 +271,23 @@ def test_bad_callback_is_logged_and_the_bus_keeps_going(bus, capsys):
     drain(bus)
     assert len(got) == 1
     assert "bad callback" in capsys.readouterr().err
+
+
+def test_a_refusal_the_handler_means_is_one_line_without_traceback(capsys):
+    """rospy: a handler's ServiceException is reported without a traceback (issue 14, item 18)."""
+    from workbench.errors import WorkbenchError
+
+    bus = Bus()
+    server, caller = Node("server", bus=bus), Node("caller", bus=bus)
+
+    def refuse(req):
+        raise WorkbenchError("a turtle named 'turtle1' already exists")
+
+    server.create_service("refuse", AddTwoInts, refuse)
+    with pytest.raises(
+        ServiceError,
+        match="service cannot process request: a turtle named 'turtle1' already exists",
+    ):
+        caller.create_client("refuse", AddTwoInts).call(AddTwoInts.Request())
+    assert "Traceback" not in capsys.readouterr().err
+    bus.shutdown()

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any
 from workbench.bus.bus import default_bus
 from workbench.bus.clock import ShutdownInterrupt
 from workbench.bus.errors import ServiceError, ServiceTimeout, ShutdownError, TopicTypeError
-from workbench.errors import MessageError
+from workbench.errors import MessageError, WorkbenchError
 from workbench.msgs import Message, is_service, md5sum
 
 if TYPE_CHECKING:
@@ -325,6 +325,13 @@ class ServiceServer:
         token = current_node.set(self.node)
         try:
             result = self.handler(request)
+        except WorkbenchError as error:
+            # a refusal the handler means (rospy's ServiceException): one line, no traceback
+            self.node.get_logger().debug(f"service [{self.name}] refused the request: {error}")
+            raise ServiceError(
+                f"service [{self.name}] responded with an error: service cannot process "
+                f"request: {error}"
+            ) from None
         except Exception as error:
             self.node.get_logger().error(
                 f"Error processing request: {error}\n{traceback.format_exc().rstrip()}"
