@@ -31,6 +31,7 @@ import numpy as np
 from machine import describe  # noqa: E402
 from scipy.spatial import cKDTree
 
+from workbench.errors import WorkbenchError
 from workbench.mapping import LikelihoodField, SlamConfig, build_map, read_log, run_slam
 from workbench.mapping.evaluate import (
     NOISE_LEVELS,
@@ -45,7 +46,7 @@ from workbench.mapping.render import save_png
 from workbench.mapping.scan import densify
 
 HERE = Path(__file__).resolve().parent
-DEFAULT_LOG = HERE.parent.parent / "shared" / "datasets" / "intel-corrected.log.gz"
+DEFAULT_LOG = HERE.parent / "mapping" / "logs" / "intel-corrected.log.gz"
 #: (a1 rad/rad, a2 rad/m, a3 m/m, a4 m/rad) per noise level.
 LEVELS = NOISE_LEVELS
 RELATION_DISTANCES = (1.0, 5.0)
@@ -106,7 +107,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--levels", default="low,middle,high", help="comma-separated levels")
     parser.add_argument("--out", type=Path, default=HERE / "results" / "slam.json")
     args = parser.parse_args(argv)
-    log = read_log(args.log)
+    try:
+        log = read_log(args.log)
+    except WorkbenchError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 1
     args.out.parent.mkdir(parents=True, exist_ok=True)
     scans = log.scans[:300] if args.quick else log.scans
     reference = log.references()

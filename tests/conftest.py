@@ -2,8 +2,7 @@
 
 * ``require_program("dot")`` skips a test when a system program is missing,
   and fails it instead when ``WORKBENCH_REQUIRE_ALL=1`` (as ``.ci/run`` sets).
-* ``shared_datasets`` is ``../shared/datasets`` beside the checkout, skipping
-  when absent (a user's checkout has none).
+* ``intel_log`` is the Intel Research Lab log shipped in ``mapping/logs/``.
 * ``run_notebook(name)`` executes ``notebooks/<name>`` in a real kernel with
   ``WORKBENCH_NOTEBOOK_MODE=short``.
 * ``run_cli(*args)`` runs ``python -m workbench`` in a subprocess.
@@ -51,11 +50,9 @@ def require_program():
 
 
 @pytest.fixture(scope="session")
-def shared_datasets() -> Path:
-    path = REPO_ROOT.parent / "shared" / "datasets"
-    if not path.is_dir():
-        skip_or_fail(f"{path} is absent (it ships beside the development checkout only)")
-    return path
+def intel_log() -> Path:
+    """The Intel Research Lab log (CARMEN, corrected), shipped in ``mapping/logs/``."""
+    return REPO_ROOT / "mapping" / "logs" / "intel-corrected.log.gz"
 
 
 @pytest.fixture(scope="session")
@@ -115,6 +112,7 @@ def run_notebook(tmp_path, monkeypatch):
         path = REPO_ROOT / "notebooks" / name
         notebook = nbformat.read(path, as_version=4)
         monkeypatch.setenv("WORKBENCH_NOTEBOOK_MODE", "short")
+        monkeypatch.setenv("WORKBENCH_OUTPUT_DIR", str(tmp_path / "output"))
         client = NotebookClient(
             notebook,
             timeout=timeout,

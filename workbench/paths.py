@@ -125,6 +125,28 @@ def user_data_root() -> Path:
     return (Path(xdg) if xdg else Path.home() / ".local" / "share") / "workbench"
 
 
+def notebook_output(lab: str) -> Path:
+    """The folder a lab notebook writes its files into (snapshots, bags, maps, pictures).
+
+    ``$WORKBENCH_OUTPUT_DIR/<lab>``, else ``user_data_root()/output/<lab>``, created on
+    use: outside the checkout, so running the notebooks leaves ``notebooks/`` as cloned.
+
+    Raises:
+        WorkbenchError: the folder cannot be created.
+    """
+    explicit = os.environ.get("WORKBENCH_OUTPUT_DIR")
+    base = Path(explicit).expanduser() if explicit else user_data_root() / "output"
+    folder = base / lab
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise WorkbenchError(
+            f"cannot create the notebook output folder {folder}: {error.strerror}",
+            hint="set WORKBENCH_OUTPUT_DIR to a writable directory",
+        ) from None
+    return folder
+
+
 def seed_copy(source: Path, target: Path) -> None:
     """Copy every file of ``source`` that ``target`` lacks (existing files are kept).
 

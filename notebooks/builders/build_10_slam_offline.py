@@ -17,7 +17,7 @@ map with `rosrun map_server map_saver -f mymap`. Here the same happens offline o
 laser log: the Intel Research Lab dataset (CARMEN format). The command-line equivalent is
 
 ```
-workbench slam ../shared/datasets/intel-corrected.log.gz --out mymap
+workbench slam intel-corrected --out mymap
 workbench map show mymap.yaml --png mymap_view.png
 ```
 
@@ -33,27 +33,20 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 import numpy as np
 
-from workbench.mapping import build_map, load_map, read_log, run_slam, save_map
+from workbench.mapping import build_map, load_map, read_log, resolve_log, run_slam, save_map
 from workbench.mapping.evaluate import (
     NOISE_LEVELS, absolute_trajectory_error, noisy_odometry, relations, relative_error,
 )
 from workbench.paths import project_root
 
 SHORT = os.environ.get("WORKBENCH_NOTEBOOK_MODE") == "short"
-LOG = Path(os.environ.get(
-    "WORKBENCH_INTEL_LOG",
-    project_root().parent / "shared" / "datasets" / "intel-corrected.log.gz",
-))
-print("log:", LOG, "(found)" if LOG.exists() else "(absent: a simulated log is used instead)")""",
+LOG = resolve_log("intel-corrected")  # shipped in mapping/logs/; any CARMEN log or bag works
+print("log:", LOG.relative_to(project_root()))""",
     ),
     (
         "code",
-        """if LOG.exists():
-    log = read_log(LOG)
-    scans = log.scans[:120] if SHORT else log.scans
-else:  # a user's checkout without the shared datasets: a simulated two-room tour
-    from workbench.mapping.simulate import demo_world, loop_trajectory, simulate_scans
-    scans = simulate_scans(demo_world(), loop_trajectory(), seed=0)
+        """log = read_log(LOG)
+scans = log.scans[:120] if SHORT else log.scans
 reference = np.array([s.reference for s in scans])
 duration = scans[-1].stamp - scans[0].stamp
 print(f"{len(scans)} scans of {len(scans[0].ranges)} beams over {duration:.0f} s")""",

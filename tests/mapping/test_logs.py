@@ -102,8 +102,8 @@ def test_truncated_gzip_keeps_the_scans_before_the_damage(tmp_path):
     assert any("truncated" in w for w in log.warnings)
 
 
-def test_intel_log_has_910_scans_of_180_beams(shared_datasets):
-    log = read_log(shared_datasets / "intel-corrected.log.gz")
+def test_intel_log_has_910_scans_of_180_beams(intel_log):
+    log = read_log(intel_log)
     assert len(log.scans) == 910
     assert all(len(s.ranges) == 180 for s in log.scans)
     assert log.warnings == []

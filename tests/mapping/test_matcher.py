@@ -73,8 +73,8 @@ def test_recovers_a_known_offset_in_a_simulated_room_below_one_cell():
     assert result.score > 0.8
 
 
-def test_recovers_a_known_offset_between_two_real_intel_scans(shared_datasets):
-    log = read_log(shared_datasets / "intel-corrected.log.gz")
+def test_recovers_a_known_offset_between_two_real_intel_scans(intel_log):
+    log = read_log(intel_log)
     a, b = log.scans[300], log.scans[301]
     field = LikelihoodField(transform_points(a.reference, densify(a.points(20.0))), 0.05, 0.05)
     offset = np.array([0.25, -0.2, np.radians(7.0)])

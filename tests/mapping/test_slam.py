@@ -85,8 +85,8 @@ def _noisy_odometry(reference, alphas, seed):
 
 
 @pytest.mark.slow
-def test_loop_closure_reduces_error_on_the_intel_log(shared_datasets):
-    log = read_log(shared_datasets / "intel-corrected.log.gz")
+def test_loop_closure_reduces_error_on_the_intel_log(intel_log):
+    log = read_log(intel_log)
     scans = log.scans[:330]
     reference = np.array([s.reference for s in scans])
     odom = _noisy_odometry(reference, (0.02, 0.01), seed=0)

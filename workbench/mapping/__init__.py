@@ -6,7 +6,7 @@ run offline on recorded logs.
 
 from __future__ import annotations
 
-from workbench.mapping.bagfile import read_bag, read_log
+from workbench.mapping.bagfile import read_bag, read_log, resolve_log, shipped_logs
 from workbench.mapping.carmen import read_carmen
 from workbench.mapping.errors import LogError, MapFileError
 from workbench.mapping.grid import GridMap, OccupancyGrid
@@ -37,6 +37,8 @@ __all__ = [
     "read_bag",
     "read_carmen",
     "read_log",
+    "resolve_log",
+    "shipped_logs",
     "read_map_metadata",
     "run_slam",
     "save_map",

@@ -210,16 +210,60 @@ def read_bag(
     return LaserLog(path, scans, warnings)
 
 
+#: Name endings tried when a log is given by the name of a shipped one (``intel-corrected``).
+_LOG_SUFFIXES = ("", ".log.gz", ".log", ".gz", ".bag")
+
+
+def shipped_logs() -> list[Path]:
+    """The laser logs that ship with workbench (``mapping/logs/``)."""
+    from workbench.paths import mapping_dir
+
+    folder = mapping_dir() / "logs"
+    return sorted(p for p in folder.iterdir() if p.is_file() and p.suffix != ".md")
+
+
+def resolve_log(path: str | Path) -> Path:
+    """``path`` itself if it exists or names a folder; else the shipped log of that name."""
+    candidate = Path(path)
+    if candidate.exists() or len(candidate.parts) != 1:
+        return candidate
+    from workbench.paths import mapping_dir
+
+    folder = mapping_dir() / "logs"
+    for suffix in _LOG_SUFFIXES:
+        shipped = folder / f"{candidate.name}{suffix}"
+        if shipped.is_file():
+            return shipped
+    return candidate
+
+
+def _shipped_name(path: Path) -> str:
+    name = path.name
+    for suffix in sorted(_LOG_SUFFIXES, key=len, reverse=True):
+        if suffix and name.endswith(suffix):
+            return name[: -len(suffix)]
+    return name
+
+
 def read_log(path: str | Path, **bag_options: object) -> LaserLog:
-    """Read a CARMEN log (plain or gzip) or a ROS 1 bag, told apart by their content."""
+    """Read a CARMEN log (plain or gzip) or a ROS 1 bag, told apart by their content.
+
+    ``path`` may also be the name of a log shipped in ``mapping/logs/`` (e.g.
+    ``intel-corrected``), found from any folder.
+    """
     from workbench.mapping.carmen import read_carmen
 
-    path = Path(path)
+    path = resolve_log(path)
     try:
         with open(path, "rb") as stream:
             head = stream.read(13)
     except FileNotFoundError:
-        raise LogError("log file not found", path=path) from None
+        names = ", ".join(_shipped_name(p) for p in shipped_logs())
+        raise LogError(
+            "log file not found",
+            path=path,
+            hint=f"give the path of a CARMEN log or a bag, or a shipped log's name ({names})",
+        ) from None
     except IsADirectoryError:
         raise LogError("is a directory, not a log file", path=path) from None
     except OSError as exc:
