@@ -69,10 +69,6 @@ def run(args: argparse.Namespace) -> int:
         seed = secrets.randbelow(2**31)
     start = args.start
     notes = [] if args.seed is not None else [f"seed: {seed} (repeat this run with --seed {seed})"]
-    if start is None and args.to == "home":
-        # the default start is home too: a plan to home starts somewhere else
-        start = "random"
-        notes.append("start: random (the goal is home, the default start)")
     return plan(
         args.robot,
         args.to,
@@ -222,6 +218,10 @@ def plan(
     from workbench.planning.pipeline import MotionPlanner
 
     motion = MotionPlanner(config=config, scene=obstacles, group=group)
+    if start is None and goal == motion.default_start_name():
+        # the default start is the goal: a plan to it starts somewhere else
+        start = "random"
+        notes = [*notes, f"start: random (the goal is {goal}, the default start)"]
     for note in notes:
         print(note)
     result = motion.plan(goal, start=start, planner=planner, time_limit=time_limit, seed=seed)

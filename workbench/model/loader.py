@@ -24,6 +24,11 @@ class DrakeLoadError(ModelError):
 _LOG = logging.getLogger("workbench.model")
 
 
+#: URDF tags for ROS's drivers that Drake ignores with a warning; not worth one when loading
+#: (``workbench check`` still lists them).
+_ROS_RUNTIME_TAGS = ("safety_controller", "calibration")
+
+
 class _Collector(logging.Handler):
     def __init__(self) -> None:
         super().__init__(logging.DEBUG)
@@ -50,7 +55,8 @@ def _drake_warnings(path: Path, into: list[str]):
         for message in collector.messages:
             text = " ".join(message.replace("<literal-string>.urdf", str(path)).split())
             into.append(text)
-            _LOG.warning("%s", text)
+            quiet = any(f"tag '{tag}' found" in text for tag in _ROS_RUNTIME_TAGS)
+            _LOG.log(logging.DEBUG if quiet else logging.WARNING, "%s", text)
 
 
 def load_document(

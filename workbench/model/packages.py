@@ -18,6 +18,7 @@ from pathlib import Path
 from lxml import etree
 
 from workbench.errors import ModelError
+from workbench.model.robot_library import library_packages
 from workbench.paths import urdf_dir
 
 ENV_VARIABLES = ("WORKBENCH_PACKAGE_PATH", "ROS_PACKAGE_PATH")
@@ -96,6 +97,8 @@ class PackageResolver:
                 if entry:
                     for name, directory in _scan(str(Path(entry).expanduser()), _SEARCH_DEPTH):
                         self.packages.setdefault(name, Path(directory))
+        for name, directory in library_packages().items():
+            self.packages.setdefault(name, directory)
 
     def resolve(
         self, uri: str, base_dir: Path | None, *, where: Path | None = None, line: int | None = None
@@ -113,7 +116,8 @@ class PackageResolver:
             name, _, relative = rest.partition("/")
             directory = self.packages.get(name)
             if directory is None:
-                known = ", ".join(sorted(self.packages)) or "none"
+                library = library_packages()
+                known = ", ".join(sorted(n for n in self.packages if n not in library)) or "none"
                 raise PackageNotFoundError(
                     f"unknown package '{name}' in {uri} (known packages: {known})",
                     path=where,

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from workbench.errors import ModelError
+from workbench.model.robot_library import INSTALL_HINT, library_robot, library_robots, library_root
 from workbench.paths import urdf_dir
 
 #: Suffixes tried, in order, for a bare name such as ``robot_arm``.
@@ -68,6 +69,9 @@ def resolve_robot_path(source: str | os.PathLike[str]) -> Path:
             tried.append(candidate)
             if candidate.is_file():
                 return candidate.resolve()
+        described = library_robot(text)
+        if described is not None:
+            return described
     else:
         raise ModelError(
             "no such file", path=path, hint="check the path, or give a name from urdf/"
@@ -76,13 +80,18 @@ def resolve_robot_path(source: str | os.PathLike[str]) -> Path:
     hint = "give a path to a .urdf, .sdf or .xacro file"
     if names:
         hint += " or one of: " + ", ".join(names)
+    if library_root() is None:
+        hint += f"; well-known robots (panda, ur5, ...) come with {INSTALL_HINT}"
+    else:
+        hint += " or a robot of example-robot-data (" + ", ".join(library_robots()) + ")"
     raise ModelError(
         f"no robot description '{text}' (tried {', '.join(str(t) for t in tried)})", hint=hint
     )
 
 
 def available_robots() -> list[str]:
-    """Names of the descriptions in ``urdf/`` (what :func:`resolve_robot_path` accepts)."""
+    """Names of the descriptions in ``urdf/`` (:func:`resolve_robot_path` also takes the
+    robots of an installed description package, :func:`library_robots`)."""
     directory = urdf_dir()
     if not directory.is_dir():
         return []

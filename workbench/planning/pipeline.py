@@ -184,13 +184,20 @@ class MotionPlanner:
                 q[i] = float(value[0] if isinstance(value, list | tuple) else value)
         return q
 
-    def default_start(self) -> np.ndarray:
-        """The robot's default state: the group's ``home``, else ``ready`` (MoveIt's Panda),
-        else its first named state, else zeros within limits."""
+    def default_start_name(self) -> str | None:
+        """The named state a plan starts from by default: ``home``, else ``ready`` (MoveIt's
+        Panda), else the group's first named state; None when it has none."""
         names = self.config.srdf.group_state_names(self.group)
         for name in ("home", "ready", *names):
             if name in names:
-                return self.named_state(name)
+                return name
+        return None
+
+    def default_start(self) -> np.ndarray:
+        """The robot's default state (:meth:`default_start_name`), else zeros within limits."""
+        name = self.default_start_name()
+        if name is not None:
+            return self.named_state(name)
         return np.clip(np.zeros(len(self.joint_names)), self.lower, self.upper)
 
     def is_free(self, q: np.ndarray) -> bool:

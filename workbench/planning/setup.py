@@ -34,6 +34,7 @@ from workbench.planning.config import (
     default_joint_limits,
 )
 from workbench.planning.groups import infer_groups
+from workbench.model.robot_library import library_srdf
 from workbench.planning.srdf import (
     EndEffector,
     Group,
@@ -116,6 +117,10 @@ def run_setup(
         f"({len(robot.links)} links, {len(robot.joints)} joints, {len(movable)} movable)"
     )
 
+    if srdf is None and robot.path is not None:
+        srdf = library_srdf(Path(robot.path))
+        if srdf is not None:
+            say(f"        using the SRDF that ships with the description: {srdf}")
     base = read_srdf(srdf) if srdf is not None else None
     if base is not None and base.name != robot.name:
         say(f"        note: the SRDF names robot '{base.name}', the description '{robot.name}'")

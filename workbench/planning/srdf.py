@@ -176,12 +176,17 @@ class Srdf:
         )
 
     def group_state(self, group: str, name: str) -> GroupState:
-        """The named state ``name`` of ``group`` (e.g. ``home``)."""
+        """The named state ``name`` of ``group`` (e.g. ``home``).
+
+        A state of a group that includes ``group`` whole (e.g. ``default`` of
+        ``arm_and_hand`` for ``arm``) serves too; the group's own states come first.
+        """
         self.group(group)
         names = self.group_state_names(group)
-        for state in self.group_states:
-            if state.group == group and state.name == name:
-                return state
+        for owner in self._state_owners(group):
+            for state in self.group_states:
+                if state.group == owner and state.name == name:
+                    return state
         raise SrdfError(
             f"group '{group}' has no named state '{name}'",
             path=self.path,
@@ -189,8 +194,22 @@ class Srdf:
         )
 
     def group_state_names(self, group: str) -> list[str]:
-        """Names of the states defined for ``group``."""
-        return [s.name for s in self.group_states if s.group == group]
+        """Names of the states of ``group`` and of the groups that include it whole."""
+        names: list[str] = []
+        for owner in self._state_owners(group):
+            names.extend(
+                s.name for s in self.group_states if s.group == owner and s.name not in names
+            )
+        return names
+
+    def _state_owners(self, group: str) -> list[str]:
+        """``group``, then every group that includes it as a subgroup (at any depth)."""
+        owners = [group]
+        for name in owners:
+            for other in self.groups:
+                if name in other.subgroups and other.name not in owners:
+                    owners.append(other.name)
+        return owners
 
     def end_effector_of(self, group: str) -> EndEffector | None:
         """The end effector whose ``parent_group`` is ``group``, or attached to its tip."""
