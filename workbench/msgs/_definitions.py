@@ -7,7 +7,7 @@ the ``gazebo_msgs`` types, written as fields and constants only, are added from
 
 from __future__ import annotations
 
-from workbench.msgs import _gazebo_definitions
+from workbench.msgs import _gazebo_definitions, _noetic_definitions
 
 #: "package/Name" -> .msg text
 MESSAGES: dict[str, str] = {
@@ -139,3 +139,5 @@ float32 angular
 
 MESSAGES.update(_gazebo_definitions.MESSAGES)
 SERVICES.update(_gazebo_definitions.SERVICES)
+MESSAGES.update(_noetic_definitions.MESSAGES)
+SERVICES.update(_noetic_definitions.SERVICES)

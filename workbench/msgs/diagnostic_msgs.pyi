@@ -3,20 +3,46 @@
 # Generated from the message definitions; do not edit by hand.
 
 from collections.abc import Iterable, Mapping
-from typing import Any, Final
+from typing import Any, ClassVar, Final
 
 from workbench.msgs import diagnostic_msgs as msg
 from workbench.msgs import diagnostic_msgs as srv
 from workbench.msgs import std_msgs
-from workbench.msgs._classes import Message
+from workbench.msgs._classes import Message, ServiceType
 
 __all__ = [
+    "AddDiagnostics",
+    "AddDiagnosticsRequest",
+    "AddDiagnosticsResponse",
     "DiagnosticArray",
     "DiagnosticStatus",
     "KeyValue",
+    "SelfTest",
+    "SelfTestRequest",
+    "SelfTestResponse",
     "msg",
     "srv",
 ]
+
+class AddDiagnosticsRequest(Message):
+    """``diagnostic_msgs/AddDiagnosticsRequest``."""
+
+    load_namespace: str
+    def __init__(
+        self,
+        load_namespace: str = ...,
+    ) -> None: ...
+
+class AddDiagnosticsResponse(Message):
+    """``diagnostic_msgs/AddDiagnosticsResponse``."""
+
+    success: bool
+    message: str
+    def __init__(
+        self,
+        success: bool = ...,
+        message: str = ...,
+    ) -> None: ...
 
 class DiagnosticArray(Message):
     """``diagnostic_msgs/DiagnosticArray``."""
@@ -70,3 +96,36 @@ class KeyValue(Message):
         key: str = ...,
         value: str = ...,
     ) -> None: ...
+
+class SelfTestRequest(Message):
+    """``diagnostic_msgs/SelfTestRequest``."""
+
+    def __init__(self) -> None: ...
+
+class SelfTestResponse(Message):
+    """``diagnostic_msgs/SelfTestResponse``."""
+
+    id: str
+    passed: int
+    @property
+    def status(self) -> list[DiagnosticStatus]: ...
+    @status.setter
+    def status(self, value: Iterable[DiagnosticStatus | Mapping[str, Any]]) -> None: ...
+    def __init__(
+        self,
+        id: str = ...,
+        passed: int = ...,
+        status: Iterable[DiagnosticStatus | Mapping[str, Any]] = ...,
+    ) -> None: ...
+
+class AddDiagnostics(ServiceType):
+    """``diagnostic_msgs/AddDiagnostics``: ``AddDiagnostics.Request(...)``, ``AddDiagnostics.Response(...)``."""
+
+    Request: ClassVar[type[AddDiagnosticsRequest]]
+    Response: ClassVar[type[AddDiagnosticsResponse]]
+
+class SelfTest(ServiceType):
+    """``diagnostic_msgs/SelfTest``: ``SelfTest.Request(...)``, ``SelfTest.Response(...)``."""
+
+    Request: ClassVar[type[SelfTestRequest]]
+    Response: ClassVar[type[SelfTestResponse]]

@@ -3,7 +3,7 @@
 # Generated from the message definitions; do not edit by hand.
 
 from collections.abc import Iterable, Mapping
-from typing import Any
+from typing import Any, ClassVar, Final
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -11,21 +11,33 @@ from numpy.typing import ArrayLike, NDArray
 from workbench.msgs import actionlib_msgs, builtin_interfaces, geometry_msgs, std_msgs
 from workbench.msgs import nav_msgs as msg
 from workbench.msgs import nav_msgs as srv
-from workbench.msgs._classes import Message
+from workbench.msgs._classes import Message, ServiceType
 
 __all__ = [
+    "GetMap",
     "GetMapAction",
     "GetMapActionFeedback",
     "GetMapActionGoal",
     "GetMapActionResult",
     "GetMapFeedback",
     "GetMapGoal",
+    "GetMapRequest",
+    "GetMapResponse",
     "GetMapResult",
+    "GetPlan",
+    "GetPlanRequest",
+    "GetPlanResponse",
     "GridCells",
+    "LoadMap",
+    "LoadMapRequest",
+    "LoadMapResponse",
     "MapMetaData",
     "OccupancyGrid",
     "Odometry",
     "Path",
+    "SetMap",
+    "SetMapRequest",
+    "SetMapResponse",
     "msg",
     "srv",
 ]
@@ -128,6 +140,23 @@ class GetMapGoal(Message):
 
     def __init__(self) -> None: ...
 
+class GetMapRequest(Message):
+    """``nav_msgs/GetMapRequest``."""
+
+    def __init__(self) -> None: ...
+
+class GetMapResponse(Message):
+    """``nav_msgs/GetMapResponse``."""
+
+    @property
+    def map(self) -> OccupancyGrid: ...
+    @map.setter
+    def map(self, value: OccupancyGrid | Mapping[str, Any]) -> None: ...
+    def __init__(
+        self,
+        map: OccupancyGrid | Mapping[str, Any] = ...,
+    ) -> None: ...
+
 class GetMapResult(Message):
     """``nav_msgs/GetMapResult``."""
 
@@ -138,6 +167,37 @@ class GetMapResult(Message):
     def __init__(
         self,
         map: OccupancyGrid | Mapping[str, Any] = ...,
+    ) -> None: ...
+
+class GetPlanRequest(Message):
+    """``nav_msgs/GetPlanRequest``."""
+
+    @property
+    def start(self) -> geometry_msgs.PoseStamped: ...
+    @start.setter
+    def start(self, value: geometry_msgs.PoseStamped | Mapping[str, Any]) -> None: ...
+    @property
+    def goal(self) -> geometry_msgs.PoseStamped: ...
+    @goal.setter
+    def goal(self, value: geometry_msgs.PoseStamped | Mapping[str, Any]) -> None: ...
+    tolerance: float
+    def __init__(
+        self,
+        start: geometry_msgs.PoseStamped | Mapping[str, Any] = ...,
+        goal: geometry_msgs.PoseStamped | Mapping[str, Any] = ...,
+        tolerance: float = ...,
+    ) -> None: ...
+
+class GetPlanResponse(Message):
+    """``nav_msgs/GetPlanResponse``."""
+
+    @property
+    def plan(self) -> Path: ...
+    @plan.setter
+    def plan(self, value: Path | Mapping[str, Any]) -> None: ...
+    def __init__(
+        self,
+        plan: Path | Mapping[str, Any] = ...,
     ) -> None: ...
 
 class GridCells(Message):
@@ -159,6 +219,35 @@ class GridCells(Message):
         cell_width: float = ...,
         cell_height: float = ...,
         cells: Iterable[geometry_msgs.Point | Mapping[str, Any]] = ...,
+    ) -> None: ...
+
+class LoadMapRequest(Message):
+    """``nav_msgs/LoadMapRequest``."""
+
+    map_url: str
+    def __init__(
+        self,
+        map_url: str = ...,
+    ) -> None: ...
+
+class LoadMapResponse(Message):
+    """``nav_msgs/LoadMapResponse``."""
+
+    RESULT_SUCCESS: Final = 0
+    RESULT_MAP_DOES_NOT_EXIST: Final = 1
+    RESULT_INVALID_MAP_DATA: Final = 2
+    RESULT_INVALID_MAP_METADATA: Final = 3
+    RESULT_UNDEFINED_FAILURE: Final = 255
+
+    @property
+    def map(self) -> OccupancyGrid: ...
+    @map.setter
+    def map(self, value: OccupancyGrid | Mapping[str, Any]) -> None: ...
+    result: int
+    def __init__(
+        self,
+        map: OccupancyGrid | Mapping[str, Any] = ...,
+        result: int = ...,
     ) -> None: ...
 
 class MapMetaData(Message):
@@ -246,3 +335,55 @@ class Path(Message):
         header: std_msgs.Header | Mapping[str, Any] = ...,
         poses: Iterable[geometry_msgs.PoseStamped | Mapping[str, Any]] = ...,
     ) -> None: ...
+
+class SetMapRequest(Message):
+    """``nav_msgs/SetMapRequest``."""
+
+    @property
+    def map(self) -> OccupancyGrid: ...
+    @map.setter
+    def map(self, value: OccupancyGrid | Mapping[str, Any]) -> None: ...
+    @property
+    def initial_pose(self) -> geometry_msgs.PoseWithCovarianceStamped: ...
+    @initial_pose.setter
+    def initial_pose(
+        self, value: geometry_msgs.PoseWithCovarianceStamped | Mapping[str, Any]
+    ) -> None: ...
+    def __init__(
+        self,
+        map: OccupancyGrid | Mapping[str, Any] = ...,
+        initial_pose: geometry_msgs.PoseWithCovarianceStamped | Mapping[str, Any] = ...,
+    ) -> None: ...
+
+class SetMapResponse(Message):
+    """``nav_msgs/SetMapResponse``."""
+
+    success: bool
+    def __init__(
+        self,
+        success: bool = ...,
+    ) -> None: ...
+
+class GetMap(ServiceType):
+    """``nav_msgs/GetMap``: ``GetMap.Request(...)``, ``GetMap.Response(...)``."""
+
+    Request: ClassVar[type[GetMapRequest]]
+    Response: ClassVar[type[GetMapResponse]]
+
+class GetPlan(ServiceType):
+    """``nav_msgs/GetPlan``: ``GetPlan.Request(...)``, ``GetPlan.Response(...)``."""
+
+    Request: ClassVar[type[GetPlanRequest]]
+    Response: ClassVar[type[GetPlanResponse]]
+
+class LoadMap(ServiceType):
+    """``nav_msgs/LoadMap``: ``LoadMap.Request(...)``, ``LoadMap.Response(...)``."""
+
+    Request: ClassVar[type[LoadMapRequest]]
+    Response: ClassVar[type[LoadMapResponse]]
+
+class SetMap(ServiceType):
+    """``nav_msgs/SetMap``: ``SetMap.Request(...)``, ``SetMap.Response(...)``."""
+
+    Request: ClassVar[type[SetMapRequest]]
+    Response: ClassVar[type[SetMapResponse]]

@@ -3,7 +3,7 @@
 # Generated from the message definitions; do not edit by hand.
 
 from collections.abc import Iterable, Mapping
-from typing import Any, Final
+from typing import Any, ClassVar, Final
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -11,7 +11,7 @@ from numpy.typing import ArrayLike, NDArray
 from workbench.msgs import builtin_interfaces, geometry_msgs, std_msgs
 from workbench.msgs import sensor_msgs as msg
 from workbench.msgs import sensor_msgs as srv
-from workbench.msgs._classes import Message
+from workbench.msgs._classes import Message, ServiceType
 
 __all__ = [
     "BatteryState",
@@ -39,6 +39,9 @@ __all__ = [
     "Range",
     "RegionOfInterest",
     "RelativeHumidity",
+    "SetCameraInfo",
+    "SetCameraInfoRequest",
+    "SetCameraInfoResponse",
     "Temperature",
     "TimeReference",
     "msg",
@@ -710,6 +713,29 @@ class RelativeHumidity(Message):
         variance: float = ...,
     ) -> None: ...
 
+class SetCameraInfoRequest(Message):
+    """``sensor_msgs/SetCameraInfoRequest``."""
+
+    @property
+    def camera_info(self) -> CameraInfo: ...
+    @camera_info.setter
+    def camera_info(self, value: CameraInfo | Mapping[str, Any]) -> None: ...
+    def __init__(
+        self,
+        camera_info: CameraInfo | Mapping[str, Any] = ...,
+    ) -> None: ...
+
+class SetCameraInfoResponse(Message):
+    """``sensor_msgs/SetCameraInfoResponse``."""
+
+    success: bool
+    status_message: str
+    def __init__(
+        self,
+        success: bool = ...,
+        status_message: str = ...,
+    ) -> None: ...
+
 class Temperature(Message):
     """``sensor_msgs/Temperature``."""
 
@@ -744,3 +770,9 @@ class TimeReference(Message):
         time_ref: builtin_interfaces.Time | Mapping[str, Any] = ...,
         source: str = ...,
     ) -> None: ...
+
+class SetCameraInfo(ServiceType):
+    """``sensor_msgs/SetCameraInfo``: ``SetCameraInfo.Request(...)``, ``SetCameraInfo.Response(...)``."""
+
+    Request: ClassVar[type[SetCameraInfoRequest]]
+    Response: ClassVar[type[SetCameraInfoResponse]]
