@@ -103,7 +103,14 @@ class ExecutedNotebook:
 
 @pytest.fixture
 def run_notebook(tmp_path, monkeypatch):
-    """Execute a notebook from ``notebooks/`` in short mode; returns an :class:`ExecutedNotebook`."""
+    """Execute a notebook from ``notebooks/`` in short mode; returns an :class:`ExecutedNotebook`.
+
+    The kernel (and every process it starts) works in the empty folder
+    ``tmp_path/"cwd"``, which stands for ``notebooks/``; ``WORKBENCH_OUTPUT_DIR`` is
+    ``tmp_path/"output"``. Afterwards the working folder must still be empty and
+    files may exist only under ``tmp_path/"output"/<notebook name>``: running a
+    notebook leaves ``notebooks/`` as cloned.
+    """
 
     def _run(name: str, timeout: float = 600):
         import nbformat
@@ -111,15 +118,26 @@ def run_notebook(tmp_path, monkeypatch):
 
         path = REPO_ROOT / "notebooks" / name
         notebook = nbformat.read(path, as_version=4)
+        cwd = tmp_path / "cwd"
+        output = tmp_path / "output"
+        cwd.mkdir()
         monkeypatch.setenv("WORKBENCH_NOTEBOOK_MODE", "short")
-        monkeypatch.setenv("WORKBENCH_OUTPUT_DIR", str(tmp_path / "output"))
+        monkeypatch.setenv("WORKBENCH_OUTPUT_DIR", str(output))
         client = NotebookClient(
             notebook,
             timeout=timeout,
             kernel_name="python3",
-            resources={"metadata": {"path": str(tmp_path)}},
+            resources={"metadata": {"path": str(cwd)}},
         )
         client.execute()
+        left = sorted(str(p.relative_to(cwd)) for p in cwd.rglob("*"))
+        assert not left, f"{name} wrote into its working folder (notebooks/): {left}"
+        stray = sorted(p.name for p in tmp_path.iterdir() if p not in (cwd, output))
+        assert not stray, f"{name} wrote beside its output folder: {stray}"
+        lab = Path(name).stem
+        if output.exists():
+            others = sorted(p.name for p in output.iterdir() if p.name != lab)
+            assert not others, f"{name} wrote outside notebook_output({lab!r}): {others}"
         return ExecutedNotebook(notebook)
 
     return _run

@@ -39,10 +39,10 @@ cells = [
         'talker = Node("talker", bus=bus, anonymous=True)\n'
         'listener = Node("listener", bus=bus, anonymous=True)\n'
         'pub = talker.create_publisher("chatter", String, queue_size=10)\n'
-        "heard = []\n\n"
+        "heard = []\n\n\n"
         "def callback(msg):\n"
         "    heard.append(msg.data)\n"
-        '    listener.get_logger().info(listener.name + "I heard %s", msg.data)\n\n'
+        '    listener.get_logger().info(listener.name + "I heard %s", msg.data)\n\n\n'
         'listener.create_subscription("chatter", String, callback)\n'
         'timer = talker.create_timer(0.1, lambda event: pub.publish(String(data="hello world")))\n'
         "time.sleep(SECONDS)\n"
@@ -54,10 +54,10 @@ cells = [
         "The handler returns the sum; the client's call blocks until the response comes back."
     ),
     new_code_cell(
-        'server = Node("add_two_ints_server", bus=bus)\n\n'
+        'server = Node("add_two_ints_server", bus=bus)\n\n\n'
         "def handle_add_two_ints(req):\n"
-        '    print("Returning [%s + %s = %s]" % (req.a, req.b, req.a + req.b))\n'
-        "    return AddTwoInts.Response(sum=req.a + req.b)\n\n"
+        '    print(f"Returning [{req.a} + {req.b} = {req.a + req.b}]")\n'
+        "    return AddTwoInts.Response(sum=req.a + req.b)\n\n\n"
         'server.create_service("add_two_ints", AddTwoInts, handle_add_two_ints)\n'
         'client = listener.create_client("add_two_ints", AddTwoInts)\n'
         "client.wait_for_service(timeout=5.0)\n"
@@ -124,8 +124,12 @@ cells = [
         'env = dict(os.environ, WORKBENCH_MASTER_URI=uri, PYTHONUNBUFFERED="1")\n'
         'examples = project_root() / "examples"\n'
         "children = [\n"
-        "    subprocess.Popen([sys.executable, str(examples / name)], env=env,\n"
-        "                     stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)\n"
+        "    subprocess.Popen(\n"
+        "        [sys.executable, str(examples / name)],\n"
+        "        env=env,\n"
+        "        stdout=subprocess.DEVNULL,\n"
+        "        stderr=subprocess.DEVNULL,\n"
+        "    )\n"
         '    for name in ("talker.py", "add_two_ints_server.py")\n'
         "]\n"
         'print("core at", uri, "- started", [c.pid for c in children])'
@@ -137,8 +141,13 @@ cells = [
         'me.create_subscription("chatter", String, lambda m: heard_remote.append(m.data))\n'
         "remote.spin_until(lambda: len(heard_remote) >= 3, timeout=15)\n"
         'print("heard from the talker process:", heard_remote[:3])\n'
-        'client = subprocess.run([sys.executable, str(examples / "add_two_ints_client.py"), "1", "3"],\n'
-        "                        env=env, capture_output=True, text=True, timeout=60)\n"
+        "client = subprocess.run(\n"
+        '    [sys.executable, str(examples / "add_two_ints_client.py"), "1", "3"],\n'
+        "    env=env,\n"
+        "    capture_output=True,\n"
+        "    text=True,\n"
+        "    timeout=60,\n"
+        ")\n"
         "print(client.stdout)\n"
         'print("nodes:", sorted(remote.graph().nodes))'
     ),

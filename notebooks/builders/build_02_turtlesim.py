@@ -21,21 +21,23 @@ cells = [
         "| `rosparam set /turtlesim/background_r 150` | `workbench param set ...` | `node.set_param` |\n"
         "| `rosbag record/info/play` | `workbench bag record/info/play` | `Recorder`, `format_info`, `play` |\n"
         "| `rqt_plot /turtle1/pose/x` | `workbench topic plot /turtle1/pose/x` | `plot_series` |\n"
-        "| `rqt_graph` | `workbench node graph` | `graph_to_dot` |"
+        "| `rqt_graph` | `workbench node graph` | `graph_to_dot` |\n\n"
+        "The files it writes (the bag, the plot, the graph) go to the output folder "
+        "printed by the first cell, not next to the notebook."
     ),
     new_code_cell(
-        "import os\n"
-        "from pathlib import Path\n\n"
-        "from IPython.display import Image, SVG, display\n\n"
+        "import os\n\n"
+        "from IPython.display import SVG, Image, display\n\n"
         "from workbench.bus import Bus, Node\n"
-        "from workbench.msgs.geometry_msgs import Twist, Vector3\n"
+        "from workbench.msgs.geometry_msgs import Twist\n"
         "from workbench.msgs.std_srvs import Empty\n"
         "from workbench.msgs.turtlesim import Pose, SetPen, Spawn, TeleportAbsolute\n"
+        "from workbench.paths import notebook_output\n"
         "from workbench.turtlesim.node import TurtlesimNode\n\n"
         'SHORT = os.environ.get("WORKBENCH_NOTEBOOK_MODE") == "short"\n'
         "DRIVE_SECONDS = 1.0 if SHORT else 4.0\n"
-        'OUT = Path("lab2_output")\n'
-        "OUT.mkdir(exist_ok=True)"
+        'OUT = notebook_output("02_turtlesim")\n'
+        'print("files go to", OUT)'
     ),
     new_markdown_cell(
         "## 1. Start turtlesim\n\n"
@@ -69,7 +71,7 @@ cells = [
         'me.create_subscription("/turtle1/pose", Pose, lambda m: poses.append((sim.sim.time, m)))\n'
         'cmd_vel = me.create_publisher("/turtle1/cmd_vel", Twist)\n'
         'command = message_from_args("geometry_msgs/Twist", ["[2.0, 0.0, 0.0]", "[0.0, 0.0, 1.8]"])\n'
-        "for second in range(int(DRIVE_SECONDS)):\n"
+        "for _ in range(int(DRIVE_SECONDS)):\n"
         "    cmd_vel.publish(command)\n"
         "    sim.advance(1.0)\n"
         "print(format_echo(poses[-1][1]))\n"
@@ -78,14 +80,14 @@ cells = [
     new_markdown_cell("## 4. Services (`rosservice call`)"),
     new_code_cell(
         'spawn = me.create_client("/spawn", Spawn)\n'
-        "print(spawn.call(Spawn.Request(x=2, y=2, theta=0.2, name='')))  # -> name: \"turtle2\"\n"
+        'print(spawn.call(Spawn.Request(x=2, y=2, theta=0.2, name="")))  # -> name: "turtle2"\n'
         'me.create_client("/turtle1/set_pen", SetPen).call(SetPen.Request(r=255, g=0, b=255, width=3))\n'
         'me.create_client("/turtle1/teleport_absolute", TeleportAbsolute).call(\n'
         "    TeleportAbsolute.Request(x=1, y=1, theta=0)\n"
         ")\n"
         "sim.advance(0.1)\n"
         "try:\n"
-        "    spawn.call(Spawn.Request(x=1, y=1, theta=0, name='turtle2'))\n"
+        '    spawn.call(Spawn.Request(x=1, y=1, theta=0, name="turtle2"))\n'
         "except Exception as error:\n"
         '    print("as in ROS, a taken name fails:", error)\n'
         "display(sim.sim.render().resize((250, 250)))"
@@ -103,15 +105,18 @@ cells = [
     ),
     new_markdown_cell(
         "## 6. Record, inspect and replay a bag (`rosbag record/info/play`)\n\n"
-        "The bag is a real ROS 1 bag (v2.0): ROS, Foxglove and `rosbags` open it."
+        "The bag, `turtle.bag` in the output folder, is a real ROS 1 bag (v2.0): ROS, "
+        "Foxglove and `rosbags` open it."
     ),
     new_code_cell(
         "from workbench.bag import format_info, play, read_messages, summarize\n"
         "from workbench.bag.record import Recorder\n\n"
         'me.create_client("/reset", Empty).call(Empty.Request())\n'
-        'recorder = Recorder(Node("record", bus=bus), OUT / "turtle.bag", topics=["/turtle1/cmd_vel", "/turtle1/pose"])\n'
+        "recorder = Recorder(\n"
+        '    Node("record", bus=bus), OUT / "turtle.bag", topics=["/turtle1/cmd_vel", "/turtle1/pose"]\n'
+        ")\n"
         "recorder.poll_topics()\n"
-        "for second in range(int(DRIVE_SECONDS)):\n"
+        "for _ in range(int(DRIVE_SECONDS)):\n"
         '    cmd_vel.publish(message_from_args("geometry_msgs/Twist", ["[2.0, 0, 0]", "[0, 0, -1.8]"]))\n'
         "    sim.advance(1.0)\n"
         "bag_path = recorder.close()\n"
@@ -123,18 +128,18 @@ cells = [
         "bus2.clock.use_sim_time()\n"
         'replay_sim = TurtlesimNode(Node("turtlesim", bus=bus2), start_timer=False)\n'
         'player = Node("play", bus=bus2)\n'
-        "publishers = {}\n\n"
+        "publishers = {}\n\n\n"
         "def publish(topic, typename, msg):\n"
         '    if topic == "/turtle1/cmd_vel":\n'
-        "        publishers.setdefault(topic, player.create_publisher(topic, Twist)).publish(msg)\n\n"
-        "clock = {'t': 0.0}\n"
+        "        publishers.setdefault(topic, player.create_publisher(topic, Twist)).publish(msg)\n\n\n"
+        'clock = {"t": 0.0}\n\n\n'
         "def sleep(seconds):  # bag time drives the simulation instead of the wall clock\n"
         "    replay_sim.advance(seconds)\n"
-        "    clock['t'] += seconds\n\n"
-        "report = play(bag_path, publish, delay=0.0, sleep=sleep, now=lambda: clock['t'])\n"
+        '    clock["t"] += seconds\n\n\n'
+        'report = play(bag_path, publish, delay=0.0, sleep=sleep, now=lambda: clock["t"])\n'
         "replay_sim.advance(0.016)\n"
-        "recorded_end = [m.msg for m in read_messages(bag_path, ['/turtle1/pose'])][-1]\n"
-        "replayed_end = replay_sim.sim.turtle('turtle1').pose\n"
+        'recorded_end = [m.msg for m in read_messages(bag_path, ["/turtle1/pose"])][-1]\n'
+        'replayed_end = replay_sim.sim.turtle("turtle1").pose\n'
         'print(f"published {report.published} messages")\n'
         'print(f"recorded end  x={recorded_end.x:.3f} y={recorded_end.y:.3f}")\n'
         'print(f"replayed end  x={replayed_end.x:.3f} y={replayed_end.y:.3f}")\n'

@@ -1,10 +1,20 @@
-import nbformat
+"""Builds notebooks/04_tf.ipynb (run: python notebooks/builders/build_04_tf.py)."""
+
 from pathlib import Path
+
+import nbformat
 from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook
 
 cells = []
-md = lambda s: cells.append(new_markdown_cell(s.strip()))
-code = lambda s: cells.append(new_code_cell(s.strip()))
+
+
+def md(text: str) -> None:
+    cells.append(new_markdown_cell(text.strip()))
+
+
+def code(text: str) -> None:
+    cells.append(new_code_cell(text.strip()))
+
 
 md("""
 # Experiment 4 — tf: frames over time
@@ -16,16 +26,22 @@ turtle2, a fixed and a moving `carrot1` frame, and time travel. Then Additional 
 
 The lab's own scripts (`examples/tf/*.py`) run the same demo across processes with
 `workbench launch examples/tf/start_demo.launch`.
+
+The files this notebook writes (the frame tree, the plots, a snapshot) go to the output
+folder printed by the first cell, not next to the notebook.
 """)
 code("""
 import math
 import os
 
+from workbench.paths import notebook_output
 from workbench.tf import Buffer, TransformListener
 from workbench.turtlesim.tf_demo import TurtleTfDemo
 
 SHORT = os.environ.get("WORKBENCH_NOTEBOOK_MODE") == "short"
-SECONDS = 4.0 if SHORT else 12.0   # simulated seconds per step of the lab
+SECONDS = 4.0 if SHORT else 12.0  # simulated seconds per step of the lab
+OUT = notebook_output("04_tf")
+print("files go to", OUT)
 """)
 md("""
 ## 1. Broadcast the turtles, listen, follow
@@ -37,7 +53,8 @@ and a listener that every 0.1 s looks up turtle1 in turtle2's frame and drives t
 code("""
 demo = TurtleTfDemo(turtle1_cmd=(1.0, 0.5))
 follow = demo.run(SECONDS, follow="turtle1")
-print("turtle1 at (%.2f, %.2f), turtle2 at (%.2f, %.2f)" % (*demo.pose("turtle1")[:2], *demo.pose("turtle2")[:2]))
+(x1, y1), (x2, y2) = demo.pose("turtle1")[:2], demo.pose("turtle2")[:2]
+print(f"turtle1 at ({x1:.2f}, {y1:.2f}), turtle2 at ({x2:.2f}, {y2:.2f})")
 """)
 md("""
 ## 2. tf tools: `tf_echo` and the frame tree
@@ -60,7 +77,7 @@ dot_source = frames_dot(demo.buffer.frames_info(), recorded_at=demo.now())
 if find_program("dot"):
     from IPython.display import SVG, display
 
-    display(SVG(filename=str(write_frames(dot_source, "frames.svg"))))
+    display(SVG(filename=str(write_frames(dot_source, OUT / "frames.svg"))))
 else:
     print(dot_source)
 """)
@@ -73,13 +90,17 @@ md("""
 code("""
 demo.add_carrot(moving=False)
 carrot = demo.run(SECONDS, follow="carrot1")
-print("carrot1 in world:", [round(v, 2) for v in demo.buffer.lookup("world", "carrot1", 0).translation])
+print(
+    "carrot1 in world:",
+    [round(v, 2) for v in demo.buffer.lookup("world", "carrot1", 0).translation],
+)
 print("turtle2:         ", [round(v, 2) for v in demo.pose("turtle2")[:2]])
 
 demo.add_carrot(moving=True)
 moving = demo.run(SECONDS, follow="carrot1")
 st = demo.buffer.lookup("turtle1", "carrot1", 0)
-print("moving carrot1 in turtle1: (%.2f, %.2f), radius %.2f" % (st.translation[0], st.translation[1], math.hypot(*st.translation[:2])))
+x, y = st.translation[:2]
+print(f"moving carrot1 in turtle1: ({x:.2f}, {y:.2f}), radius {math.hypot(x, y):.2f}")
 """)
 md("""
 ## 4. Wait for transform and time travel
@@ -99,18 +120,27 @@ except ExtrapolationException as error:
 
 travel = demo.run(SECONDS, follow="turtle1", delay=5.0, fixed_frame="world")
 rows = travel[-1]
-print("turtle2 at (%.2f, %.2f); turtle1 now at (%.2f, %.2f)" % (rows[3], rows[4], rows[1], rows[2]))
+print(f"turtle2 at ({rows[3]:.2f}, {rows[4]:.2f}); turtle1 now at ({rows[1]:.2f}, {rows[2]:.2f})")
 """)
 code("""
 import matplotlib.pyplot as plt
 
 fig, axes = plt.subplots(1, 3, figsize=(12, 4))
-for ax, rows, title in zip(axes, (follow, carrot, travel), ("follow turtle1", "follow carrot1", "turtle1 5 s ago")):
+for ax, rows, title in zip(
+    axes,
+    (follow, carrot, travel),
+    ("follow turtle1", "follow carrot1", "turtle1 5 s ago"),
+    strict=True,
+):
     ax.plot(rows[:, 1], rows[:, 2], label="turtle1")
     ax.plot(rows[:, 3], rows[:, 4], label="turtle2")
-    ax.set_title(title); ax.set_aspect("equal"); ax.set_xlim(0, 11.1); ax.set_ylim(0, 11.1)
+    ax.set_title(title)
+    ax.set_aspect("equal")
+    ax.set_xlim(0, 11.1)
+    ax.set_ylim(0, 11.1)
 axes[0].legend()
-fig.savefig("turtles.png", dpi=80)
+fig.savefig(OUT / "turtles.png", dpi=80)
+print("plot:", OUT / "turtles.png")
 demo.close()
 """)
 md("""
@@ -124,14 +154,20 @@ from workbench.msgs.geometry_msgs import PointStamped
 from workbench.tf.broadcaster import make_transform
 
 buffer = Buffer()
-buffer.set_transform(make_transform("base_link", "base_laser", (0.1, 0.0, 0.2), (0, 0, 0, 1), 1.0), "robot_tf_publisher")
+buffer.set_transform(
+    make_transform("base_link", "base_laser", (0.1, 0.0, 0.2), (0, 0, 0, 1), 1.0),
+    "robot_tf_publisher",
+)
 laser_point = PointStamped()
 laser_point.header.frame_id = "base_laser"
 laser_point.point.x, laser_point.point.y, laser_point.point.z = 1.0, 0.2, 0.0
 base_point = buffer.transform(laser_point, "base_link")
-print("base_laser: (%.2f, %.2f, %.2f) -----> base_link: (%.2f, %.2f, %.2f) at time %.2f" % (
-    laser_point.point.x, laser_point.point.y, laser_point.point.z,
-    base_point.point.x, base_point.point.y, base_point.point.z, base_point.header.stamp.to_sec()))
+laser, base = laser_point.point, base_point.point
+print(
+    f"base_laser: ({laser.x:.2f}, {laser.y:.2f}, {laser.z:.2f}) -----> "
+    f"base_link: ({base.x:.2f}, {base.y:.2f}, {base.z:.2f}) "
+    f"at time {base_point.header.stamp.to_sec():.2f}"
+)
 """)
 md("""
 ## 6. The robot state publisher, and frames in the viewer
@@ -141,13 +177,11 @@ md("""
 like RViz's RobotModel and TF displays.
 """)
 code("""
-import numpy as np
-
 from workbench.bus import Bus, Node
 from workbench.model import load_robot
 from workbench.robot_state import JointStatePublisher, RobotModelDisplay, RobotStatePublisher
-from workbench.viz.frames import TfDisplay
 from workbench.viz import Viewer
+from workbench.viz.frames import TfDisplay
 
 bus = Bus(threaded=False)
 robot = load_robot("robot_arm")
@@ -168,7 +202,7 @@ print("links not placed:", model.update())
 frames = TfDisplay(arm_buffer, viewer, fixed_frame="base_link", scale=0.08)
 print("frames not placed:", frames.update())
 viewer.frame_robot(robot, robot.positions_from(jsp.positions))
-print("snapshot:", viewer.save_html("robot_tf.html"))
+print("snapshot:", viewer.save_html(OUT / "robot_tf.html"))
 bus.shutdown()
 """)
 

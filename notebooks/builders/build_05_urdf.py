@@ -17,21 +17,26 @@ cells = [
         "| `roslaunch urdf_tutorial display.launch model:=FILE` | `workbench show FILE` "
         "| `viewer.show_robot(load_robot(FILE))` |\n\n"
         "The models are in the project's `urdf/` folder; a name such as `myfirst` means "
-        "`urdf/myfirst.urdf`."
+        "`urdf/myfirst.urdf`. What the notebook writes (snapshots, a URDF of your own, a "
+        "picture) goes to the output folder printed by the first cell, not next to the "
+        "notebook."
     ),
     new_code_cell(
-        "import os\n"
-        "from pathlib import Path\n\n"
+        "import os\n\n"
         "from IPython.display import Image, display\n\n"
         "from workbench.model import check_robot, graph_robot, load_robot, resolve_robot_path\n"
+        "from workbench.paths import notebook_output\n"
         "from workbench.viz import Viewer\n\n"
         'SHORT = os.environ.get("WORKBENCH_NOTEBOOK_MODE") == "short"\n'
+        'OUT = notebook_output("05_urdf")\n'
+        'print("files go to", OUT)\n'
         "viewer = Viewer.instance()\n"
         'print("Meshcat is at", viewer.url, "- open it in a browser to see each step")'
     ),
     new_markdown_cell(
         "Each step prints the URDF, checks it, draws its graph, shows it in the viewer and "
-        "writes a self-contained HTML snapshot (`NAME.html`) you can open without a server."
+        "writes a self-contained HTML snapshot, `NAME.html` in the output folder, that you "
+        "can open without a server."
     ),
     new_code_cell(
         "def step(name, q=None, show_file=True):\n"
@@ -46,7 +51,7 @@ cells = [
         "    q = robot.default_positions() if q is None else robot.positions_from(q)\n"
         "    viewer.show_robot(robot, q)\n"
         "    viewer.frame_robot(robot, q)\n"
-        '    print("snapshot:", viewer.save_html(f"{name}.html"))\n'
+        '    print("snapshot:", viewer.save_html(OUT / f"{name}.html"))\n'
         "    return robot, report"
     ),
     new_markdown_cell(
@@ -86,8 +91,12 @@ cells = [
         "(the joint_state_publisher GUI); `poll_sliders()` reads them and moves the robot."
     ),
     new_code_cell(
-        'pose = {"head_swivel": 0.8, "gripper_extension": -0.2, '
-        '"left_gripper_joint": 0.4, "right_gripper_joint": 0.4}\n'
+        "pose = {\n"
+        '    "head_swivel": 0.8,\n'
+        '    "gripper_extension": -0.2,\n'
+        '    "left_gripper_joint": 0.4,\n'
+        '    "right_gripper_joint": 0.4,\n'
+        "}\n"
         'robot, report = step("flexible", q=pose, show_file=False)\n'
         "for joint in robot.movable_joints:\n"
         '    print(f"{joint.name:26s} {joint.type:11s} lower={joint.lower} upper={joint.upper}")\n'
@@ -110,10 +119,12 @@ cells = [
     new_markdown_cell(
         "## 8. What the checker catches\n"
         "A link you write yourself, with a negative mass and an impossible inertia "
-        "(one principal moment larger than the sum of the other two):"
+        "(one principal moment larger than the sum of the other two), saved as "
+        "`broken.urdf` in the output folder:"
     ),
     new_code_cell(
-        'Path("broken.urdf").write_text(\'\'\'<?xml version="1.0"?>\n'
+        'broken = OUT / "broken.urdf"\n'
+        'broken.write_text("""<?xml version="1.0"?>\n'
         '<robot name="broken">\n'
         '  <link name="base_link">\n'
         "    <inertial>\n"
@@ -122,18 +133,20 @@ cells = [
         "    </inertial>\n"
         "  </link>\n"
         "</robot>\n"
-        "''')\n"
-        'report = check_robot("broken.urdf")\n'
+        '""")\n'
+        "report = check_robot(broken)\n"
         "print(report)\n"
         'assert [f.code for f in report.errors] == ["non-positive-mass", "inertia-triangle-inequality"]'
     ),
     new_markdown_cell(
         "## 9. A picture for your report\n"
-        "Headless Chromium renders the last snapshot to PNG (skipped in the short test run)."
+        "Headless Chromium renders the last snapshot to `physics.png` in the output folder "
+        "(skipped in the short test run)."
     ),
     new_code_cell(
         "if not SHORT:\n"
-        '    png = viewer.render_png("physics.html", "physics.png", width=640, height=480)\n'
+        '    png = viewer.render_png(OUT / "physics.html", OUT / "physics.png", width=640, height=480)\n'
+        '    print("picture:", png)\n'
         "    display(Image(filename=str(png)))"
     ),
 ]

@@ -20,13 +20,14 @@ cells = [
         "| Execute | `--execute` | `execute(planner, result)` |\n\n"
         "Each plan runs OMPL (RRTConnect), shortcuts the path, times it with toppra under "
         "the joint velocity and acceleration limits, and re-checks the timed trajectory "
-        "densely with exact geometry before returning it."
+        "densely with exact geometry before returning it. The files it writes (a plot, "
+        "snapshots) go to the output folder printed by the first cell, not next to the "
+        "notebook."
     ),
     new_code_cell(
-        "import os\n"
-        "from pathlib import Path\n\n"
+        "import os\n\n"
         "from IPython.display import Image, display\n\n"
-        "from workbench.paths import planning_dir\n"
+        "from workbench.paths import notebook_output, planning_dir\n"
         "from workbench.planning.config import ConfigNotFoundError, load_config\n"
         "from workbench.planning.execute import execute\n"
         "from workbench.planning.output import animate, plot_png, show_scene, summary_table\n"
@@ -34,24 +35,29 @@ cells = [
         "from workbench.planning.setup import run_setup\n"
         "from workbench.viz import Viewer\n\n"
         'SHORT = os.environ.get("WORKBENCH_NOTEBOOK_MODE") == "short"\n'
+        'OUT = notebook_output("10_plan_execute")\n'
+        'print("files go to", OUT)\n'
         "viewer = Viewer.instance()\n"
         'print("Meshcat is at", viewer.url)'
     ),
     new_markdown_cell(
         "## 1. The planning configuration\n\n"
         "`planning/ROBOT/` holds the SRDF and `planning.yaml` written by the setup assistant "
-        "(notebook 09). If a robot has none yet we run the setup here, into this folder."
+        "(notebook 09). If a robot has none yet we run the setup here, into "
+        "`planning_configs/ROBOT/` in the output folder."
     ),
     new_code_cell(
         "def config_for(robot):\n"
         "    try:\n"
         "        return load_config(robot)\n"
         "    except ConfigNotFoundError:\n"
-        '        print(f"no configuration for {robot}: running the setup assistant")\n'
-        '        return run_setup(robot, out_dir=Path("planning_configs") / robot,\n'
-        "                         samples=1000 if SHORT else 10000)\n\n"
-        'arm3 = MotionPlanner(config=config_for("arm3"),\n'
-        '                     scene=planning_dir() / "scenes" / "arm3_table.yaml")\n'
+        "        pass\n"
+        '    ours = OUT / "planning_configs" / robot\n'
+        '    if (ours / "planning.yaml").is_file():\n'
+        "        return load_config(ours)\n"
+        '    print(f"no configuration for {robot}: running the setup assistant into {ours}")\n'
+        "    return run_setup(robot, out_dir=ours, samples=1000 if SHORT else 10000)\n\n\n"
+        'arm3 = MotionPlanner(config=config_for("arm3"), scene=planning_dir() / "scenes" / "arm3_table.yaml")\n'
         'print("group", arm3.group, "joints", arm3.joint_names, "tip", arm3.tip_link())\n'
         'print("obstacles:", arm3.scene.names())'
     ),
@@ -78,8 +84,11 @@ cells = [
         "keeps every sample inside them."
     ),
     new_code_cell(
-        'display(Image(filename=str(plot_png(to_point.trajectory, "arm3_point.png", '
-        "arm3.lower, arm3.upper))))"
+        "display(\n"
+        "    Image(\n"
+        '        filename=str(plot_png(to_point.trajectory, OUT / "arm3_point.png", arm3.lower, arm3.upper))\n'
+        "    )\n"
+        ")"
     ),
     new_markdown_cell(
         "## 3. Execute in simulation\n\n"
@@ -88,21 +97,23 @@ cells = [
     ),
     new_code_cell("report = execute(arm3, to_point)\nprint(report.summary())"),
     new_markdown_cell(
-        "The plan as an animation in the viewer, saved as a self-contained HTML file:"
+        "The plan as an animation in the viewer, saved as a self-contained HTML file "
+        "(`arm3_plan.html` in the output folder):"
     ),
     new_code_cell(
         "viewer.clear()\n"
         "show_scene(viewer, arm3.scene)\n"
         "animate(viewer, arm3.robot, arm3.joints, to_point.trajectory)\n"
-        'print("snapshot:", viewer.save_html("arm3_plan.html"))'
+        'print("snapshot:", viewer.save_html(OUT / "arm3_plan.html"))'
     ),
     new_markdown_cell(
         "## 4. The 7-joint `robot_arm`\n\n"
         "The same steps for the lab's arm among two pillars, a block and a lamp."
     ),
     new_code_cell(
-        'arm = MotionPlanner(config=config_for("robot_arm"),\n'
-        '                    scene=planning_dir() / "scenes" / "robot_arm_pillars.yaml")\n'
+        "arm = MotionPlanner(\n"
+        '    config=config_for("robot_arm"), scene=planning_dir() / "scenes" / "robot_arm_pillars.yaml"\n'
+        ")\n"
         'goals = ["random"] if SHORT else ["random", "home"]\n'
         "results = {}\n"
         "for k, goal in enumerate(goals):\n"
@@ -117,7 +128,7 @@ cells = [
         "viewer.clear()\n"
         "show_scene(viewer, arm.scene)\n"
         'animate(viewer, arm.robot, arm.joints, results["random"].trajectory)\n'
-        'print("snapshot:", viewer.save_html("robot_arm_plan.html"))'
+        'print("snapshot:", viewer.save_html(OUT / "robot_arm_plan.html"))'
     ),
     new_markdown_cell(
         "## 5. When a request cannot be met\n\n"
@@ -126,8 +137,7 @@ cells = [
     ),
     new_code_cell(
         "from workbench.errors import PlanningError\n\n"
-        'for goal, planner in [("q=0,1.2,2.2", None), ("xyz=2,0,0", None), '
-        '("random", "RRTConect")]:\n'
+        'for goal, planner in [("q=0,1.2,2.2", None), ("xyz=2,0,0", None), ("random", "RRTConect")]:\n'
         "    try:\n"
         "        arm3.plan(goal, planner=planner)\n"
         "    except PlanningError as error:\n"

@@ -22,26 +22,32 @@ workbench map show mymap.yaml --png mymap_view.png
 ```
 
 The log's poses are already corrected by a SLAM run, so we use them as the reference,
-feed the SLAM odometry with realistic noise, and compare it with dead reckoning.""",
+feed the SLAM odometry with realistic noise, and compare it with dead reckoning. The
+saved map goes to the output folder printed by the first cell, not next to the notebook.""",
     ),
     (
         "code",
         """import os
 import time
-from pathlib import Path
 
 import matplotlib.pyplot as plt
 import numpy as np
 
 from workbench.mapping import build_map, load_map, read_log, resolve_log, run_slam, save_map
 from workbench.mapping.evaluate import (
-    NOISE_LEVELS, absolute_trajectory_error, noisy_odometry, relations, relative_error,
+    NOISE_LEVELS,
+    absolute_trajectory_error,
+    noisy_odometry,
+    relations,
+    relative_error,
 )
-from workbench.paths import project_root
+from workbench.paths import notebook_output, project_root
 
 SHORT = os.environ.get("WORKBENCH_NOTEBOOK_MODE") == "short"
 LOG = resolve_log("intel-corrected")  # shipped in mapping/logs/; any CARMEN log or bag works
-print("log:", LOG.relative_to(project_root()))""",
+print("log:", LOG.relative_to(project_root()))
+OUT = notebook_output("10_slam_offline")
+print("files go to", OUT)""",
     ),
     (
         "code",
@@ -63,7 +69,7 @@ of *Probabilistic Robotics* (rotation and translation noise grow with the motion
         """alphas = NOISE_LEVELS["middle"]
 print("a1, a2, a3, a4 =", alphas)
 odometry = noisy_odometry(reference, alphas, seed=0)
-for scan, pose in zip(scans, odometry):
+for scan, pose in zip(scans, odometry, strict=True):
     scan.odom = pose""",
     ),
     (
@@ -71,8 +77,10 @@ for scan, pose in zip(scans, odometry):
         """start = time.perf_counter()
 result = run_slam(scans)
 seconds = time.perf_counter() - start
-print(f"{len(result.keyframes)} keyframes, {len(result.loop_closures)} loop closures, "
-      f"{seconds:.1f} s = {duration / seconds:.0f}x faster than real time")""",
+print(
+    f"{len(result.keyframes)} keyframes, {len(result.loop_closures)} loop closures, "
+    f"{seconds:.1f} s = {duration / seconds:.0f}x faster than real time"
+)""",
     ),
     (
         "code",
@@ -80,8 +88,10 @@ print(f"{len(result.keyframes)} keyframes, {len(result.loop_closures)} loop clos
 print(f"{'':16} {'ATE (m)':>8} {'relative 1 m: trans (m)':>24} {'rot (deg)':>10}")
 for name, poses in [("dead reckoning", odometry), ("workbench SLAM", result.poses)]:
     rel = relative_error(poses, reference, pairs)
-    print(f"{name:16} {absolute_trajectory_error(poses, reference):8.3f} "
-          f"{rel['trans_mean']:14.3f} ± {rel['trans_std']:.3f} {rel['rot_mean']:10.2f}")""",
+    print(
+        f"{name:16} {absolute_trajectory_error(poses, reference):8.3f} "
+        f"{rel['trans_mean']:14.3f} ± {rel['trans_std']:.3f} {rel['rot_mean']:10.2f}"
+    )""",
     ),
     (
         "code",
@@ -89,35 +99,48 @@ for name, poses in [("dead reckoning", odometry), ("workbench SLAM", result.pose
 ax.plot(*reference[:, :2].T, "k-", lw=1, label="reference (corrected log)")
 ax.plot(*odometry[:, :2].T, "-", color="tab:orange", lw=1, label="dead reckoning")
 ax.plot(*result.poses[:, :2].T, "-", color="tab:red", lw=1, label="SLAM")
-ax.set_aspect("equal"); ax.set_xlabel("x (m)"); ax.set_ylabel("y (m)"); ax.legend()
+ax.set_aspect("equal")
+ax.set_xlabel("x (m)")
+ax.set_ylabel("y (m)")
+ax.legend()
 plt.show()""",
     ),
     (
         "md",
         """## Save the map as map_saver does, and load it as map_server does
-`save_map(grid, "mymap")` writes `mymap.pgm` (free 254, occupied 0, unknown 205) and
-`mymap.yaml`; `load_map("mymap.yaml")` reads it back with map_server's thresholds. The
+`save_map(grid, OUT / "mymap")` writes `mymap.pgm` (free 254, occupied 0, unknown 205) and
+`mymap.yaml` into the output folder; `load_map(yaml_path)` reads it back with map_server's thresholds. The
 reloaded map equals the grid reduced to free / occupied / unknown.""",
     ),
     (
         "code",
         """grid = build_map(scans, result.poses, resolution=0.05).to_map()
-pgm, yaml_path = save_map(grid, "mymap")
+pgm, yaml_path = save_map(grid, OUT / "mymap")
+print("saved", pgm.name, "and", yaml_path.name, "in", yaml_path.parent)
 print(yaml_path.read_text())
 reloaded = load_map(yaml_path)
-print("reloaded equals the saved grid's trinary form:",
-      np.array_equal(reloaded.data, grid.trinary().data))""",
+print(
+    "reloaded equals the saved grid's trinary form:",
+    np.array_equal(reloaded.data, grid.trinary().data),
+)""",
     ),
     (
         "code",
         """dead_reckoning_map = build_map(scans, odometry, resolution=0.05).to_map()
 
+
 def show(ax, m, title):
     grey = np.where(m.data < 0, 0.8, 1.0 - m.data / 100.0)
-    extent = [m.origin[0], m.origin[0] + m.width * m.resolution,
-              m.origin[1], m.origin[1] + m.height * m.resolution]
+    extent = [
+        m.origin[0],
+        m.origin[0] + m.width * m.resolution,
+        m.origin[1],
+        m.origin[1] + m.height * m.resolution,
+    ]
     ax.imshow(grey, cmap="gray", origin="lower", extent=extent, vmin=0, vmax=1)
-    ax.set_title(title); ax.set_xlabel("x (m)")
+    ax.set_title(title)
+    ax.set_xlabel("x (m)")
+
 
 fig, axes = plt.subplots(1, 3, figsize=(15, 5))
 show(axes[0], dead_reckoning_map, "dead reckoning")
