@@ -5,10 +5,9 @@ from __future__ import annotations
 import signal
 import subprocess
 import sys
-import time
 
 import pytest
-from bus_process_helpers import REPO, free_port
+from bus_process_helpers import REPO, free_port, wait_for
 
 from workbench.bus import AnyMsg, Bus, CoreError, Node, ServiceError, TopicTypeError
 from workbench.msgs.beginner_tutorials import AddTwoInts
@@ -16,15 +15,6 @@ from workbench.msgs.std_msgs import Int32, String
 
 pytestmark = pytest.mark.multiprocess
 EXAMPLES = REPO / "examples"
-
-
-def wait_for(predicate, timeout=15.0) -> bool:
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if predicate():
-            return True
-        time.sleep(0.05)
-    return bool(predicate())
 
 
 def test_lab_scripts_as_separate_processes(procs):

@@ -116,3 +116,26 @@ def test_a_description_is_drawn_from_a_plant_of_its_own(viewer, arm3):
     assert viewer.meshcat.HasPath(f"{prefix}/tool_link")
     with pytest.raises(ViewerError, match="no robot is shown at /nowhere"):
         viewer.robot_at("/nowhere")
+
+
+def test_the_tf_display_frames_every_frame_it_draws(viewer):
+    """The turtles of the tf lab sit near x = 8 m; the view must reach them (issue 14, item 13)."""
+    from workbench.msgs.geometry_msgs import TransformStamped
+    from workbench.tf import Buffer
+    from workbench.viz.frames import TfDisplay
+
+    buffer = Buffer()
+    for child, x, y in (("turtle1", 8.0, 5.5), ("turtle2", 2.0, 1.0)):
+        st = TransformStamped()
+        st.header.frame_id, st.child_frame_id = "world", child
+        st.transform.translation.x, st.transform.translation.y = x, y
+        st.transform.rotation.w = 1.0
+        buffer.set_transform_static(st, "test")
+    display = TfDisplay(buffer, viewer, fixed_frame="world", scale=0.2)
+    assert display.update() == {}
+    eye, target = viewer.camera_pose
+    # world at the origin, the turtles, each with its triad's reach (0.2 m): the box's centre
+    assert target == pytest.approx([4.0, 2.75, 0.0], abs=1e-9)
+    # far enough back to see the whole 8 m x 5.5 m spread
+    assert np.linalg.norm(eye - target) > 8.0
+    display.clear()

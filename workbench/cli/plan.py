@@ -15,6 +15,7 @@ from __future__ import annotations
 import argparse
 from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -235,19 +236,42 @@ def plan(
         from workbench.planning.output import plot_png
 
         print(f"wrote {plot_png(result.trajectory, plot, motion.lower, motion.upper)}")
-    if execute:
-        from workbench.planning.execute import execute as execute_plan
-
-        print(execute_plan(motion, result).summary())
+    report = _execute(motion, result) if execute else None
     if html:
-        from workbench.planning.output import animate, show_scene
+        from workbench.planning.output import animate, animate_samples, show_scene
         from workbench.viz import Viewer
 
         viewer = Viewer.instance()
         show_scene(viewer, motion.scene)
-        animate(viewer, motion.robot, motion.joints, result.trajectory)
+        if report is not None:  # what the robot did, not what was asked of it
+            animate_samples(viewer, motion.robot, motion.joints, report.t, report.q_actual)
+        else:
+            animate(viewer, motion.robot, motion.joints, result.trajectory)
         print(f"wrote {viewer.save_html(html)}")
     return 0
+
+
+def _execute(motion: Any, result: Any) -> Any:
+    """Run the plan in simulation; with a core running, move the robot there in real time.
+
+    Like MoveIt's fake execution, ``/joint_states`` goes out at wall-clock pace and wall
+    time stamps, so robot_state_publisher, ``workbench rviz`` and ``topic echo`` in other
+    terminals see the arm move. Without a core there is nobody to tell, so the run goes
+    as fast as it computes.
+    """
+    from workbench.bus import Bus
+    from workbench.planning.execute import execute as execute_plan
+
+    bus = Bus.auto(quiet=True)
+    try:
+        live = bool(getattr(bus, "is_connected", False))
+        if live:
+            print(f"executing in real time, publishing /joint_states on {bus.uri}", flush=True)
+        report = execute_plan(motion, result, bus=bus if live else None, realtime=live)
+    finally:
+        bus.shutdown()
+    print(report.summary())
+    return report
 
 
 def _load_or_setup(robot: str, config_dir: str | None):

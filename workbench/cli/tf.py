@@ -262,6 +262,7 @@ def view(
             names = buffer.get_frame_strings()
         print(f"{len(names)} frames: {', '.join(names) or 'none received'}", flush=True)
         if html:
+            display.frame_camera()  # where the frames are now
             print(f"snapshot: {viewer.save_html(html)}", flush=True)
     finally:
         node.shutdown()

@@ -97,8 +97,8 @@ class PackageResolver:
                 if entry:
                     for name, directory in _scan(str(Path(entry).expanduser()), _SEARCH_DEPTH):
                         self.packages.setdefault(name, Path(directory))
-        for name, directory in library_packages().items():
-            self.packages.setdefault(name, directory)
+        for library_name, library_dir in library_packages().items():
+            self.packages.setdefault(library_name, library_dir)
 
     def resolve(
         self, uri: str, base_dir: Path | None, *, where: Path | None = None, line: int | None = None

@@ -17,16 +17,25 @@ from workbench.planning.output import trajectory_samples
 
 
 def execute(
-    planner, result, *, bus: Any = None, time_step: float = 0.001, settle_time: float = 0.5
+    planner,
+    result,
+    *,
+    bus: Any = None,
+    time_step: float = 0.001,
+    settle_time: float = 0.5,
+    realtime: bool = False,
 ):
     """Track ``result``'s trajectory in simulation.
 
     Args:
         planner: The :class:`~workbench.planning.pipeline.MotionPlanner` that planned it.
         result: The :class:`~workbench.planning.pipeline.PlanResult`.
-        bus: A ``workbench.bus.Bus`` for ``/joint_states`` and ``/clock``, or None.
+        bus: A ``workbench.bus.Bus`` for ``/joint_states`` (and ``/clock`` unless
+            ``realtime``), or None.
         time_step: Simulation step, s.
         settle_time: Simulated time after the end of the motion, s.
+        realtime: Run at wall-clock pace and stamp ``/joint_states`` with wall time, no
+            ``/clock`` (as MoveIt's fake controllers move the robot in RViz).
 
     Returns:
         The World's ``TrackingReport`` (max, RMS and final error per joint).
@@ -34,7 +43,13 @@ def execute(
     from workbench.sim import World
 
     controller = planner.config.controller or {}
-    world = World(time_step=time_step, bus=bus, ground=False)
+    world = World(
+        time_step=time_step,
+        bus=bus,
+        ground=False,
+        clock=not realtime,
+        realtime_rate=1.0 if realtime else 0.0,
+    )
     robot = world.add_robot(
         planner.robot,  # its description: the file is not read again
         controller=controller.get("type", "inverse_dynamics"),

@@ -170,17 +170,41 @@ def animate(
     Returns:
         The robot's Meshcat prefix.
     """
-    q0, _, _ = trajectory.sample(0.0)
-    prefix = viewer.show_robot(robot, joints.full(q0[0]), prefix)
-    meshcat = viewer.meshcat
     fps = 30.0
-    meshcat.StartRecording(frames_per_second=fps, set_visualizations_while_recording=False)
     times = trajectory.times(1.0 / fps)
     q, _, _ = trajectory.sample(times)
-    for t, q_t in zip(times, q, strict=True):
-        for link, X_WL in robot.forward_kinematics(joints.full(q_t)).items():
+    return animate_samples(viewer, robot, joints, times, q, prefix=prefix)
+
+
+def animate_samples(
+    viewer,
+    robot,
+    joints,
+    times: np.ndarray,
+    q: np.ndarray,
+    *,
+    prefix: str | None = None,
+    fps: float = 30.0,
+) -> str:
+    """Record group positions ``q`` (M, n) at ``times`` (M,) as a Meshcat animation, and
+    frame the camera on everything the robot sweeps through (as ``workbench show`` frames).
+
+    Returns:
+        The robot's Meshcat prefix.
+    """
+    times = np.asarray(times, dtype=float)
+    q = np.atleast_2d(np.asarray(q, dtype=float))
+    prefix = viewer.show_robot(robot, joints.full(q[0]), prefix)
+    meshcat = viewer.meshcat
+    meshcat.StartRecording(frames_per_second=fps, set_visualizations_while_recording=False)
+    frame_times = np.arange(0.0, float(times[-1]) + 0.5 / fps, 1.0 / fps)
+    picks = np.minimum(np.searchsorted(times, frame_times), len(times) - 1)
+    for t, k in zip(frame_times, picks, strict=True):
+        for link, X_WL in robot.forward_kinematics(joints.full(q[k])).items():
             meshcat.SetTransform(f"{prefix}/{link}", X_WL, time_in_recording=float(t))
     meshcat.StopRecording()
     meshcat.PublishRecording()
     viewer.set_positions(robot, joints.full(q[-1]), prefix)
+    poses = np.unique(np.linspace(0, len(q) - 1, 5).round().astype(int))
+    viewer.frame_camera(np.vstack([viewer.robot_points(robot, joints.full(q[k])) for k in poses]))
     return prefix

@@ -23,6 +23,7 @@ from typing import Any
 
 import numpy as np
 
+from workbench.model.robot_library import library_srdf
 from workbench.planning.collision_matrix import compute_collision_matrix, default_state
 from workbench.planning.config import (
     DEFAULT_ACCELERATION_TIME,
@@ -34,7 +35,6 @@ from workbench.planning.config import (
     default_joint_limits,
 )
 from workbench.planning.groups import infer_groups
-from workbench.model.robot_library import library_srdf
 from workbench.planning.srdf import (
     EndEffector,
     Group,

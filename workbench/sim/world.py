@@ -25,6 +25,7 @@ given, the World publishes ``/clock`` (rosgraph_msgs/Clock) and
 from __future__ import annotations
 
 import os
+import time
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -87,6 +88,11 @@ class World:
         ground_z: Height of the ground surface in W, m.
         gravity: Gravity along -z of W, m/s^2.
         publish_period: Simulated time between bus messages, s.
+        clock: Publish ``/clock`` and stamp with simulated time (Gazebo's way). False:
+            no ``/clock``, messages stamped with wall time (MoveIt's fake execution,
+            for tools on wall time); pair it with ``realtime_rate=1``.
+        realtime_rate: Pace the simulation at this multiple of wall time (0: as fast
+            as it computes).
     """
 
     def __init__(
@@ -99,12 +105,18 @@ class World:
         gravity: float | Sequence[float] = 9.81,
         publish_period: float = 0.01,
         physics: Mapping[str, Any] | None = None,
+        clock: bool = True,
+        realtime_rate: float = 0.0,
     ) -> None:
         if not time_step > 0:
             raise SimulationError(f"time_step must be positive, got {time_step}")
+        if not realtime_rate >= 0:
+            raise SimulationError(f"realtime_rate must be 0 or positive, got {realtime_rate}")
         self.time_step = float(time_step)
         self.bus = bus
         self.publish_period = float(publish_period)
+        self.publish_clock = bool(clock)
+        self.realtime_rate = float(realtime_rate)
         self.gravity_vector = _gravity_vector(gravity)
         self.physics = dict(physics or {})
         self._ground_z = float(ground_z) if ground else None
@@ -419,6 +431,8 @@ class World:
             self._add_visualizers()
         self.diagram = self.builder.Build()
         self.simulator = Simulator(self.diagram)
+        if self.realtime_rate > 0:
+            self.simulator.set_target_realtime_rate(self.realtime_rate)
         self.context = self.simulator.get_mutable_context()
         self.set_body_wrenches([])
 
@@ -934,9 +948,11 @@ class World:
             self._publishers["joint_states"] = self._node.create_publisher(
                 "/joint_states", JointState, queue_size=10
             )
-        nanos = int(round(self.time * 1e9))
+        seconds = self.time if self.publish_clock else time.time()
+        nanos = int(round(seconds * 1e9))
         stamp = Time(nanos // 1_000_000_000, nanos % 1_000_000_000)
-        self._publishers["clock"].publish(Clock(clock=stamp))
+        if self.publish_clock:
+            self._publishers["clock"].publish(Clock(clock=stamp))
         msg = JointState()
         msg.header.stamp = stamp
         names, positions, velocities = [], [], []

@@ -64,11 +64,25 @@ class TfDisplay:
         self.scale = scale
         self.prefix = prefix
         self._drawn: set[str] = set()
+        #: Origins of the frames drawn by the last update, in the fixed frame, m.
+        self.origins: dict[str, np.ndarray] = {}
+
+    def frame_camera(self) -> None:
+        """Point the camera so every drawn frame is in view (as ``workbench show`` frames)."""
+        if not self.origins:
+            return
+        points = np.array(list(self.origins.values()))
+        reach = self.scale * np.vstack([np.eye(3), -np.eye(3)])
+        self.viewer.frame_camera(np.vstack([points + r for r in reach]))
 
     def update(self) -> dict[str, str]:
-        """Redraw every frame; returns the frames that could not be placed and why."""
+        """Redraw every frame; returns the frames that could not be placed and why.
+
+        The camera is framed again whenever a frame appears for the first time.
+        """
         meshcat = self.viewer.meshcat
         problems: dict[str, str] = {}
+        new = False
         with self.buffer._lock:
             frames = self.buffer.get_frame_strings()
         for frame in frames:
@@ -82,9 +96,14 @@ class TfDisplay:
             if frame not in self._drawn:
                 add_triad(meshcat, path, self.scale, self.scale * 0.03)
                 self._drawn.add(frame)
+                new = True
             meshcat.SetTransform(path, rigid_transform(st.translation, st.rotation))
+            self.origins[frame] = np.asarray(st.translation, dtype=float)
+        if new:
+            self.frame_camera()
         return problems
 
     def clear(self) -> None:
         self.viewer.meshcat.Delete(self.prefix)
         self._drawn.clear()
+        self.origins.clear()

@@ -49,6 +49,7 @@ class Viewer:
                 ) from None
         self.meshcat = meshcat
         self._shown: dict[str, _Shown] = {}
+        self.camera_pose: tuple[np.ndarray, np.ndarray] | None = None
         self._sliders: dict[str, tuple[str, int]] = {}
         self._slider_values: dict[str, float] = {}
 
@@ -202,6 +203,7 @@ class Viewer:
         direction = np.array([1.0, -1.0, 0.7])
         direction /= np.linalg.norm(direction)
         self.meshcat.SetCameraPose(center + distance * direction, center)
+        self.camera_pose = (center + distance * direction, center)
 
     def save_html(self, path: str | Path) -> Path:
         """Write a self-contained snapshot of the scene (needs no network or server)."""
