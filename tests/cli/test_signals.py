@@ -298,3 +298,43 @@ kill %1 %2
     assert "status=0" in shell.stdout, shell.stdout + shell.stderr
     assert (tmp_path / "head.out").read_text().splitlines() == ['data: "hi"', "---", 'data: "hi"']
     assert "Traceback" not in (tmp_path / "echo.err").read_text()
+
+
+@pytest.mark.multiprocess
+def test_ctrl_c_to_a_launch_ends_its_nodes_quietly(tmp_path):
+    """Ctrl-C reaches every process of the terminal's group, and the launcher forwards it
+    once more, as roslaunch does: the nodes stop without an error line, a traceback or a
+    note about the second signal (issue 14, item 18)."""
+    (tmp_path / "demo.launch").write_text(
+        "<launch>"
+        '<node pkg="turtlesim" type="turtlesim_node" name="sim"/>'
+        '<node name="turtle1_tf_broadcaster" pkg="learning_tf" type="turtle_tf_broadcaster.py"'
+        ' output="screen"><param name="turtle" type="string" value="turtle1"/></node>'
+        '<node pkg="learning_tf" type="turtle_tf_listener.py" name="listener" output="screen"/>'
+        "</launch>"
+    )
+    env = dict(
+        os.environ, WORKBENCH_MASTER_URI=f"tcp/127.0.0.1:{_free_port()}", PYTHONUNBUFFERED="1"
+    )
+    env.pop("WORKBENCH_DEBUG", None)
+    log_path = tmp_path / "launch.log"
+    with open(log_path, "wb") as log:
+        launch = subprocess.Popen(
+            [sys.executable, "-m", "workbench", "launch", "demo.launch"],
+            cwd=tmp_path,
+            env=env,
+            stdout=log,
+            stderr=subprocess.STDOUT,
+            start_new_session=True,  # a group of its own, like a terminal's foreground job
+        )
+    try:
+        _wait_for(log_path, "process[listener-3]: started", launch)
+        time.sleep(4)  # the listener spawns turtle2 and loops on its Rate
+        os.killpg(launch.pid, signal.SIGINT)  # what Ctrl-C does
+        assert launch.wait(60) == 130
+    finally:
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(launch.pid, signal.SIGKILL)
+    text = log_path.read_text(errors="replace")
+    for noise in ("error:", "Traceback", "already stopping", "Exception ignored"):
+        assert noise not in text, text

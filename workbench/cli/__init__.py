@@ -103,21 +103,25 @@ def main(argv: Sequence[str] | None = None) -> int:
     SIGINT and SIGTERM stop a command cleanly even in a background job (see
     :mod:`workbench.cli.signals`); it then exits with 130 or 143.
     """
-    from workbench.cli.signals import Terminated, stop_on_signals
+    from workbench.cli.signals import Terminated, ignore_stop_signals, stop_on_signals
 
     args = list(sys.argv[1:] if argv is None else argv)
     with stop_on_signals() as stop:
         try:
             status = _dispatch(args)
         except Terminated:
-            return 128 + signal.SIGTERM
+            status = 128 + signal.SIGTERM
         except KeyboardInterrupt:
-            return 128 + signal.SIGINT
+            status = 128 + signal.SIGINT
         except BrokenPipeError:  # `workbench ... | head`: the reader left; finish quietly
             from workbench.cli.signals import silence_stdout
 
             silence_stdout()
-            return 0
+            status = 0
+    if stop.exit_status is not None and argv is None:
+        # Stopping: a second signal (a launcher forwards the terminal's Ctrl-C) must not
+        # break into the interpreter's exit with a KeyboardInterrupt traceback.
+        ignore_stop_signals()
     if stop.exit_status is not None and status == 0:
         # The command caught the interrupt and finalised: report how it was stopped.
         return stop.exit_status
@@ -138,8 +142,8 @@ def _dispatch(args: list[str]) -> int:
     try:
         return int(module.run(options) or 0)
     except WorkbenchError as error:
-        if os.environ.get("WORKBENCH_DEBUG"):
-            raise
+        if isinstance(error, KeyboardInterrupt) or os.environ.get("WORKBENCH_DEBUG"):
+            raise  # rospy's ROSInterruptException: a stop, not an error (main exits 130)
         return _report(command, error)
     except ModuleNotFoundError as error:
         # An optional package of an extra that is not installed: say which extra.

@@ -8,8 +8,10 @@ and SIGTERM raises :class:`Terminated` (a ``KeyboardInterrupt`` too), so every
 ``except KeyboardInterrupt`` / ``finally`` that finalises a command on Ctrl-C
 (closing a bag, writing an ``--html`` snapshot, stopping a launcher's
 children) runs on SIGTERM as well. Only the first signal interrupts; later ones
-are reported and ignored, so finalising is not cut short (SIGKILL still ends
-the process at once).
+are ignored, so finalising is not cut short (SIGKILL still ends the process at
+once), and reported when they come a second or more after the first (a launched
+node gets Ctrl-C twice at once, from the terminal and from its launcher, as
+under roslaunch).
 
 A command stopped by a signal exits with ``128 + signal number``: 130 for
 SIGINT and 143 for SIGTERM, as a shell reports a process killed by them.
@@ -21,9 +23,12 @@ import contextlib
 import os
 import signal
 import threading
+import time
 from collections.abc import Iterator
 from types import FrameType
 
+#: A repeated stop signal this soon after the first is the same stop, and not reported.
+REPEAT_QUIET_SECONDS = 1.0
 #: The signals that stop a long-running command.
 STOP_SIGNALS: tuple[signal.Signals, ...] = (signal.SIGINT, signal.SIGTERM)
 
@@ -37,6 +42,7 @@ class StopRequest:
 
     def __init__(self) -> None:
         self.signum: int | None = None
+        self.first_at = 0.0
 
     @property
     def exit_status(self) -> int | None:
@@ -46,9 +52,11 @@ class StopRequest:
     def note(self, signum: int) -> bool:
         """Record ``signum``; True when it is the first stop signal."""
         if self.signum is not None:
-            os.write(2, b"workbench: already stopping, please wait (SIGKILL forces it)\n")
+            if time.monotonic() - self.first_at >= REPEAT_QUIET_SECONDS:
+                os.write(2, b"workbench: already stopping, please wait (SIGKILL forces it)\n")
             return False
         self.signum = signum
+        self.first_at = time.monotonic()
         return True
 
 
@@ -105,6 +113,13 @@ def stop_event_on_signals(event: threading.Event) -> Iterator[None]:
 
     with _handlers(handler):
         yield
+
+
+def ignore_stop_signals() -> None:
+    """Ignore SIGINT and SIGTERM from now on: the process is on its way out."""
+    if threading.current_thread() is threading.main_thread():
+        for signum in STOP_SIGNALS:
+            signal.signal(signum, signal.SIG_IGN)
 
 
 def silence_stdout() -> None:
