@@ -14,7 +14,8 @@ and ``workbench topic echo -b BAG TOPIC`` must print the same text, byte for byt
   ``Image``, ``Odometry``, ``PoseStamped``, ``TransformStamped``, ``Twist``, ``Header``,
   and a test type with ``bool[]``, ``int8[]``, ``time``/``duration`` arrays and fixed
   arrays of messages);
-* ``--noarr``, ``--nostr``, ``-w WIDTH``, ``-p`` (CSV), ``-n COUNT``, ``-a``;
+* ``--noarr``, ``--nostr``, ``-w WIDTH``, ``-p`` (CSV), ``-n COUNT``, ``-a``, ``-c``,
+  ``--filter EXPR``;
 * field paths: ``/odom/pose/pose``, ``/header/stamp``, ``/tf/transforms``,
   ``/joint_states/name``, indexes and slices (``transforms[1]``, ``ranges[0:3]``,
   ``transforms[0:2]/child_frame_id``).
@@ -410,6 +411,10 @@ CASES: list[tuple[str, list[str]]] = [
     ("/camera/image/data", ["-p"]),
     ("/kinds", ["-p", "--nostr"]),
     ("/joint_states", ["-n", "2"]),
+    # rostopic -b tests every message of the bag, whatever its topic: hence the hasattr
+    ("/chatter", ["--filter", "len(getattr(m, 'data', '')) > 3"]),
+    ("/kinds/text", ["--filter", "hasattr(m, 'flag') and m.flag and m.small < 0"]),
+    ("/scan", ["--filter", "len(getattr(m, 'ranges', ())) > 3", "-c", "-n", "2"]),
     ("", ["-a"]),
 ]
 
@@ -436,6 +441,7 @@ def _rostopic_words(bag: Path, topic: str, options: list[str]) -> list[str]:
 def _workbench(bag: Path, topic: str, options: list[str]) -> str:
     width = int(options[options.index("-w") + 1]) if "-w" in options else None
     count = int(options[options.index("-n") + 1]) if "-n" in options else None
+    expression = options[options.index("--filter") + 1] if "--filter" in options else None
     buffer = io.StringIO()
     with contextlib.redirect_stdout(buffer):
         topic_cli.echo(
@@ -447,6 +453,8 @@ def _workbench(bag: Path, topic: str, options: list[str]) -> str:
             width=width,
             count=count,
             all_topics="-a" in options,
+            filter_expr=expression,
+            clear="-c" in options,
         )
     return buffer.getvalue()
 

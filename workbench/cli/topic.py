@@ -7,7 +7,7 @@ import contextlib
 import sys
 import threading
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import Any
 
 PUB_USAGE = "workbench topic pub [-1 | -r RATE | -l] TOPIC TYPE [--] [ARGS ...]"
@@ -32,6 +32,15 @@ def configure(parser: argparse.ArgumentParser) -> None:
     echo.add_argument("-n", type=int, metavar="COUNT", help="exit after COUNT messages")
     echo.add_argument("--noarr", action="store_true", help="print array lengths, not contents")
     echo.add_argument("--nostr", action="store_true", help="print string lengths, not contents")
+    echo.add_argument(
+        "--filter",
+        dest="filter_expr",
+        metavar="FILTER-EXPRESSION",
+        help="Python expression of m (the message) that selects the messages to print",
+    )
+    echo.add_argument(
+        "-c", "--clear", action="store_true", help="clear the screen before each message"
+    )
     echo.add_argument("--timeout", type=float, metavar="SECS", help="give up after SECS seconds")
     for verb, text in (("hz", "print the publishing rate"), ("bw", "print the bandwidth used")):
         meter = verbs.add_parser(verb, help=text)
@@ -77,6 +86,8 @@ def run(args: argparse.Namespace) -> int:
             plot=args.plot,
             bag=args.bag,
             all_topics=args.all,
+            filter_expr=args.filter_expr,
+            clear=args.clear,
             timeout=args.timeout,
         )
     if args.verb in ("hz", "bw"):
@@ -134,6 +145,8 @@ def echo(
     plot: bool = False,
     bag: str | None = None,
     all_topics: bool = False,
+    filter_expr: str | None = None,
+    clear: bool = False,
     timeout: float | None = None,
 ) -> int:
     """rostopic echo: print messages (or one field) as YAML until ``count`` or interrupted.
@@ -148,6 +161,9 @@ def echo(
         plot: Print CSV rows (``-p``) instead of YAML.
         bag: Echo the messages of this bag file instead of a live topic.
         all_topics: Every message in ``bag``, whatever its topic.
+        filter_expr: A Python expression of ``m`` (the whole message) and ``topic``; only
+            messages for which it is true are printed (``--filter "m.data > 2"``).
+        clear: Clear the terminal before each message (``-c``).
         timeout: Raise if ``count`` messages do not arrive within this many seconds.
 
     Raises:
@@ -165,6 +181,9 @@ def echo(
         raise BusError("topic must be specified")
     _positive(timeout, "--timeout")
     printer = _EchoPrinter(noarr=noarr, nostr=nostr, width=width, plot=plot, count=count)
+    printer.prefix = "\033[2J\033[;H" if clear and not plot else ""
+    if filter_expr:
+        printer.keep = _message_filter(filter_expr)
     if bag:
         return _echo_bag(bag, topic, printer, all_topics)
     with _cli_node() as node:
@@ -297,6 +316,33 @@ def _wait_forever(done: threading.Event) -> bool:
     return True
 
 
+def _message_filter(expression: str) -> Callable[[Any, str], bool]:
+    """``--filter``: the expression, of ``m`` and ``topic``, as a test of a message.
+
+    Raises:
+        BusError: The expression is not valid Python, or fails on a message.
+    """
+    import builtins
+
+    from workbench.errors import BusError
+
+    try:
+        code = compile(expression, "--filter", "eval")
+    except SyntaxError as error:
+        raise BusError(f"--filter is not a Python expression: {error.msg}") from None
+
+    def keep(msg: Any, topic: str) -> bool:
+        try:
+            # the user's own expression on their own messages, as rostopic evaluates it
+            return bool(eval(code, {"__builtins__": builtins}, {"m": msg, "topic": topic}))  # noqa: S307
+        except Exception as error:
+            raise BusError(
+                f"--filter {expression!r} failed: {type(error).__name__}: {error}"
+            ) from None
+
+    return keep
+
+
 class _EchoPrinter:
     """Prints echoed values (YAML documents or CSV rows) and counts them."""
 
@@ -307,6 +353,8 @@ class _EchoPrinter:
         self.count = count
         self.printed = 0
         self.first = True
+        self.prefix = ""
+        self.keep: Callable[[Any, str], bool] | None = None
 
     @property
     def done(self) -> bool:
@@ -326,7 +374,7 @@ class _EchoPrinter:
             )
         self.first = False
         try:
-            print(text, flush=True)
+            print(self.prefix + text, flush=True)
         except BrokenPipeError:  # `| head`: the reader is gone, stop as a shell tool does
             from workbench.cli.signals import silence_stdout
 
@@ -363,6 +411,8 @@ def _echo_bag(path: str, topic: str, printer: _EchoPrinter, all_topics: bool) ->
             _learn_type(conn.typename, conn.definition)
     for record in read_messages(path, wanted):
         value = record.msg
+        if printer.keep is not None and not printer.keep(value, named[record.topic]):
+            continue
         if fields:
             value = get_field(value, fields, topic=named[record.topic])
         if not printer.show(value, stamp_ns=record.stamp_ns):
@@ -396,6 +446,8 @@ def _echo(node: Any, path: str, printer: _EchoPrinter, timeout: float | None) ->
             if done.is_set():
                 return
             try:
+                if printer.keep is not None and not printer.keep(msg, topic):
+                    return
                 value = get_field(msg, fields, topic=topic) if fields else msg
             except Exception as error:  # reported once, from the main thread
                 state["error"] = error

@@ -31,7 +31,7 @@ from workbench.errors import BusError
 from workbench.msgs._classes import Message
 from workbench.msgs._time import _TimeBase
 
-_INDEX = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*)(?:\[([-0-9: ]*)\])?$")
+_INDEX = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*)(?:\[([^\]]*)\])?$")
 
 
 def split_topic_field(path: str, topics: Iterable[str]) -> tuple[str, list[str]]:
