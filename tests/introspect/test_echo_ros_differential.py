@@ -9,10 +9,10 @@ and ``workbench topic echo -b BAG TOPIC`` must print the same text, byte for byt
   ``: ``/``#``, leading spaces, numbers as text, several lines, longer than a line),
   ``string[]`` block lists, floats (float32 and float64: repr, ``nan``, ``inf``,
   ``-0.0``, huge and tiny), the full range of ints, bools, ``time``/``duration`` with
-  padded ``nsecs``, ``uint8[]``, fixed arrays, empty arrays, nested messages, arrays
+  padded ``nsecs``, ``uint8[]``, ``char[]`` (Python's ``b'...'``), fixed arrays, empty arrays, nested messages, arrays
   of messages (``TFMessage``, ``DiagnosticArray``, ``JointState``, ``LaserScan``,
   ``Image``, ``Odometry``, ``PoseStamped``, ``TransformStamped``, ``Twist``, ``Header``,
-  and a test type with ``bool[]``, ``int8[]``, ``time``/``duration`` arrays and fixed
+  and a test type with ``bool[]``, ``int8[]``, ``byte[]``, ``time``/``duration`` arrays and fixed
   arrays of messages);
 * ``--noarr``, ``--nostr``, ``-w WIDTH``, ``-p`` (CSV), ``-n COUNT``, ``-a``, ``-c``,
   ``--filter EXPR``;
@@ -63,6 +63,11 @@ int8 small
 int8[] smalls
 uint8 octet
 uint8[4] quad
+char letter
+char[] letters
+char[3] three
+byte signed
+byte[] signeds
 int16 short
 uint16 ushort
 int32 word
@@ -265,6 +270,11 @@ def _kinds(r: Random) -> Any:
         smalls=[r.integer(-128, 127) for _ in range(r.integer(0, 4))],
         octet=r.integer(0, 255),
         quad=[r.integer(0, 255) for _ in range(4)],
+        letter=r.integer(0, 255),
+        letters=bytes(r.integer(0, 255) for _ in range(r.integer(0, 5))),
+        three=b"a'" + bytes([r.integer(0, 255)]),
+        signed=r.integer(-128, 127),
+        signeds=[r.integer(-128, 127) for _ in range(r.integer(0, 3))],
         short=r.integer(-(2**15), 2**15 - 1),
         ushort=r.integer(0, 2**16 - 1),
         word=r.integer(-(2**31), 2**31 - 1),
@@ -401,6 +411,9 @@ CASES: list[tuple[str, list[str]]] = [
     ("/kinds/spans", []),
     ("/kinds/arrows[1]", []),
     ("/kinds/pair[-1]", []),
+    ("/kinds/letters", []),
+    ("/kinds/three[1:]", []),
+    ("/kinds/three[0]", ["--noarr"]),
     ("/scan/ranges[0:3]", []),
     ("/scan/ranges[-1]", []),
     ("/diagnostics/status[0:2]/values", []),
@@ -413,7 +426,7 @@ CASES: list[tuple[str, list[str]]] = [
     ("/joint_states", ["-n", "2"]),
     # rostopic -b tests every message of the bag, whatever its topic: hence the hasattr
     ("/chatter", ["--filter", "len(getattr(m, 'data', '')) > 3"]),
-    ("/kinds/text", ["--filter", "hasattr(m, 'flag') and m.flag and m.small < 0"]),
+    ("/kinds/text", ["--filter", "hasattr(m, 'small') and m.small < 100"]),
     ("/scan", ["--filter", "len(getattr(m, 'ranges', ())) > 3", "-c", "-n", "2"]),
     ("", ["-a"]),
 ]
@@ -546,6 +559,10 @@ LIVE_CASES = [
     ("/odom", "/pose/covariance", True, False),
     ("/kinds", "/pair", False, True),
     ("/kinds", "/pair", True, False),
+    ("/kinds", "/pair[0]", True, False),
+    ("/kinds", "/pair[1]", False, True),
+    ("/kinds", "/letters", False, False),
+    ("/kinds", "/three", True, False),
     ("/kinds", "/header/frame_id", False, True),
     ("/diagnostics", "/status", False, True),
 ]

@@ -204,3 +204,16 @@ def test_echo_a_bag(tmp_path):
         _echo(topic="/chatter", bag=str(path), filter_expr="m.nope")
     with pytest.raises(BusError, match="at least 2"):
         _echo(topic="/chatter", bag=str(path), width=1)
+
+
+def test_char_arrays_print_as_python_bytes():
+    from workbench.msgs._store import store
+
+    chars = store().register_message("echo_text/Chars", "char letter\nchar[] letters\nbyte[] bs\n")
+    msg = chars(letter=65, letters=b"hi'\x00", bs=[1, -2])
+    assert format_value(msg) == 'letter: 65\nletters: b"hi\'\\x00"\nbs: [1, -2]'
+    assert format_value(msg, noarr=True).split("\n")[1] == (
+        'letters: "<array type: char, length: 4>"'
+    )
+    letters = get_field(msg, ["letters[0:2]"])
+    assert format_value(letters, ros_type="char[]", typed=False) == "b'hi'"

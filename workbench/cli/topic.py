@@ -360,7 +360,14 @@ class _EchoPrinter:
     def done(self) -> bool:
         return self.count is not None and self.printed >= self.count
 
-    def show(self, value: Any, *, ros_type: str | None = None, stamp_ns: int | None = None) -> bool:
+    def show(
+        self,
+        value: Any,
+        *,
+        ros_type: str | None = None,
+        typed: bool = True,
+        stamp_ns: int | None = None,
+    ) -> bool:
         """Print one value; False once the reader is gone (``| head``) or ``count`` is reached."""
         from workbench.introspect.echo import format_echo, format_plot, format_plot_header
 
@@ -370,7 +377,12 @@ class _EchoPrinter:
                 text = format_plot_header(value, noarr=self.noarr, nostr=self.nostr) + "\n" + text
         else:
             text = format_echo(
-                value, noarr=self.noarr, nostr=self.nostr, width=self.width, ros_type=ros_type
+                value,
+                noarr=self.noarr,
+                nostr=self.nostr,
+                width=self.width,
+                ros_type=ros_type,
+                typed=typed,
             )
         self.first = False
         try:
@@ -388,7 +400,7 @@ def _echo_bag(path: str, topic: str, printer: _EchoPrinter, all_topics: bool) ->
     """rostopic echo -b: the bag's messages of ``topic`` (or a field of them) in time order."""
     from workbench.bag import read_messages, summarize
     from workbench.errors import BusError
-    from workbench.introspect.echo import get_field, split_topic_field
+    from workbench.introspect.echo import field_type, get_field, split_topic_field
 
     topic = _absolute(topic).rstrip("/") if topic and not all_topics else ""
     summary = summarize(path)
@@ -413,9 +425,12 @@ def _echo_bag(path: str, topic: str, printer: _EchoPrinter, all_topics: bool) ->
         value = record.msg
         if printer.keep is not None and not printer.keep(value, named[record.topic]):
             continue
+        ros_type = None
         if fields:
             value = get_field(value, fields, topic=named[record.topic])
-        if not printer.show(value, stamp_ns=record.stamp_ns):
+            ros_type = field_type(type(record.msg), fields)
+        # a bag gives rostopic no field types: --noarr/--nostr do not reach an echoed field
+        if not printer.show(value, ros_type=ros_type, typed=False, stamp_ns=record.stamp_ns):
             break
     return 0
 

@@ -8,7 +8,8 @@ for character:
   needs it);
 * numbers are Python's ``str`` (``float32`` values as the 32-bit value read back, so
   ``0.1`` shows as ``0.10000000149011612``), ``nan``/``inf``, bools ``True``/``False``;
-* numeric arrays (``uint8[]`` too) are ``[1, 2, 3]``, an empty array ``[]``;
+* numeric arrays (``uint8[]`` too) are ``[1, 2, 3]``, an empty array ``[]``; a ``char[]``
+  is Python's text of bytes (``b'hi'``), as rostopic on Python 3 shows it;
 * ``nsecs`` is padded to nine characters (``nsecs:  47642753``), a time at the top
   (``/topic/header/stamp``) and a list of messages start with an empty line;
 * a nested message's key and each ``-`` item keep their trailing space (``header: ``);
@@ -244,6 +245,13 @@ def _equals_itself(msg: Any) -> bool:
     return True
 
 
+def _chars(value: Any, ros_type: str | None) -> str | None:
+    """A ``char[]`` array arrives as bytes, which rostopic prints as Python does (``b'hi'``)."""
+    if ros_type and ros_type.startswith("char[") and isinstance(value, np.ndarray):
+        return str(value.astype(np.uint8).tobytes())
+    return None
+
+
 def _message(
     msg: Message, indent: str, width: int | None, options: tuple[bool, bool] | None
 ) -> str:
@@ -261,7 +269,7 @@ def _message(
             # a nested message with a NaN field: rostopic recurses only into a message that
             # compares equal to itself.
             nested = options if spec.kind == "msg" and _equals_itself(value) else None
-            text = _text(value, inner, width, nested)
+            text = _chars(value, spec.ros_type) or _text(value, inner, width, nested)
         lines.append(f"{indent}{spec.name}: {text}")
     body = "\n".join(lines)
     return "\n" + body if indent else body
@@ -274,6 +282,7 @@ def format_value(
     nostr: bool = False,
     width: int | None = None,
     ros_type: str | None = None,
+    typed: bool = True,
 ) -> str:
     """One echoed value as ``rostopic echo`` prints it (without the ``---``).
 
@@ -282,20 +291,20 @@ def format_value(
         noarr: Print arrays as ``"<array type: T, length: N>"`` (``--noarr``).
         nostr: Print strings as ``"<string length: N>"`` (``--nostr``).
         width: Pad numbers to this width (``-w``).
-        ros_type: The declared type of a field ``value`` is (see :func:`field_type`):
-            rostopic applies ``--noarr``/``--nostr`` to an echoed field only when it
-            knows the type, which it does for a live topic and not for a bag.
+        ros_type: The declared type of the field ``value`` is (see :func:`field_type`).
+        typed: Whether rostopic would know ``ros_type``: it applies ``--noarr`` and
+            ``--nostr`` to an echoed field of a live topic, not to one of a bag.
     """
     options = (noarr, nostr)
     if isinstance(value, Message) and not isinstance(value, _TimeBase):
         return _message(value, "", width, options)
-    if ros_type is not None:
-        is_array = isinstance(value, (list, tuple, np.ndarray))
-        if is_array or isinstance(value, str):
-            hidden = _hidden(value, ros_type if is_array else "string", noarr, nostr)
-            if hidden is not None:
-                return _string(hidden)
-    return _text(value, "", width, None)
+    # rostopic measures a string or an array with the field's declared type; an element of
+    # an array (a number, say) has no length, where rostopic fails, and is printed instead.
+    if typed and ros_type is not None and isinstance(value, (str, list, tuple, np.ndarray)):
+        hidden = _hidden(value, ros_type, noarr, nostr)
+        if hidden is not None:
+            return _string(hidden)
+    return _chars(value, ros_type) or _text(value, "", width, None)
 
 
 def format_echo(
@@ -305,9 +314,12 @@ def format_echo(
     nostr: bool = False,
     width: int | None = None,
     ros_type: str | None = None,
+    typed: bool = True,
 ) -> str:
     """A YAML document and its ``---`` separator line (see :func:`format_value`)."""
-    text = format_value(value, noarr=noarr, nostr=nostr, width=width, ros_type=ros_type)
+    text = format_value(
+        value, noarr=noarr, nostr=nostr, width=width, ros_type=ros_type, typed=typed
+    )
     return f"{text}\n---"
 
 
