@@ -217,3 +217,30 @@ def test_char_arrays_print_as_python_bytes():
     )
     letters = get_field(msg, ["letters[0:2]"])
     assert format_value(letters, ros_type="char[]", typed=False) == "b'hi'"
+
+
+def test_live_echo_of_a_field_hides_by_its_type(capsys):
+    """On a live topic rostopic knows the echoed field's type: --noarr reaches it."""
+    import uuid
+
+    from workbench.bus import Node
+
+    joints = get_type("sensor_msgs/JointState")
+    name = f"joints_{uuid.uuid4().hex[:8]}"
+    node = Node(name)
+    topic = f"/{name}/joint_states"
+    node.create_publisher(topic, joints, latch=True).publish(
+        joints(header=_header("base"), name=["a", "b"], position=[0.5, 1.0])
+    )
+    try:
+        assert topic_cli.echo(f"{topic}/name", count=1, noarr=True, timeout=10) == 0
+        assert capsys.readouterr().out == '"<array type: string, length: 2>"\n---\n'
+        assert topic_cli.echo(f"{topic}/name", count=1, timeout=10) == 0
+        assert capsys.readouterr().out == "\n- a\n- b\n---\n"
+        assert topic_cli.echo(topic, count=1, plot=True, noarr=True, timeout=10) == 0
+        header, row = capsys.readouterr().out.splitlines()
+        assert header == "%time,field.header.seq,field.header.stamp,field.header.frame_id"
+        # the time of a live message with a header is its stamp; the publisher numbers seq
+        assert row.startswith("5047642753,") and row.endswith(",5047642753,base")
+    finally:
+        node.shutdown()
