@@ -7,7 +7,7 @@ import contextlib
 import sys
 import threading
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import Any
 
 PUB_USAGE = "workbench topic pub [-1 | -r RATE | -l] TOPIC TYPE [--] [ARGS ...]"
@@ -20,9 +20,27 @@ def configure(parser: argparse.ArgumentParser) -> None:
     listing.add_argument("-p", dest="publishers", action="store_true", help="only published")
     listing.add_argument("-s", dest="subscribers", action="store_true", help="only subscribed")
     echo = verbs.add_parser("echo", help="print messages (YAML documents separated by ---)")
-    echo.add_argument("topic", help="topic, or topic/field such as /turtle1/pose/x")
+    echo.add_argument(
+        "topic",
+        nargs="?",
+        help="topic, or topic/field such as /turtle1/pose/x or /tf/transforms[0]",
+    )
+    echo.add_argument("-b", "--bag", metavar="BAGFILE", help="echo messages from a .bag file")
+    echo.add_argument("-a", "--all", action="store_true", help="every message in the bag (with -b)")
+    echo.add_argument("-p", dest="plot", action="store_true", help="print CSV rows (plotting)")
+    echo.add_argument("-w", dest="width", type=int, metavar="NUM_WIDTH", help="pad numbers")
     echo.add_argument("-n", type=int, metavar="COUNT", help="exit after COUNT messages")
     echo.add_argument("--noarr", action="store_true", help="print array lengths, not contents")
+    echo.add_argument("--nostr", action="store_true", help="print string lengths, not contents")
+    echo.add_argument(
+        "--filter",
+        dest="filter_expr",
+        metavar="FILTER-EXPRESSION",
+        help="Python expression of m (the message) that selects the messages to print",
+    )
+    echo.add_argument(
+        "-c", "--clear", action="store_true", help="clear the screen before each message"
+    )
     echo.add_argument("--timeout", type=float, metavar="SECS", help="give up after SECS seconds")
     for verb, text in (("hz", "print the publishing rate"), ("bw", "print the bandwidth used")):
         meter = verbs.add_parser(verb, help=text)
@@ -59,7 +77,19 @@ def run(args: argparse.Namespace) -> int:
     if args.verb == "info":
         return info(args.topic)
     if args.verb == "echo":
-        return echo(args.topic, count=args.n, noarr=args.noarr, timeout=args.timeout)
+        return echo(
+            args.topic or "",
+            count=args.n,
+            noarr=args.noarr,
+            nostr=args.nostr,
+            width=args.width,
+            plot=args.plot,
+            bag=args.bag,
+            all_topics=args.all,
+            filter_expr=args.filter_expr,
+            clear=args.clear,
+            timeout=args.timeout,
+        )
     if args.verb in ("hz", "bw"):
         return meter(args.verb, args.topic, window=args.window, duration=args.duration)
     if args.verb == "plot":
@@ -106,26 +136,58 @@ def info(topic: str) -> int:
 
 
 def echo(
-    topic: str, *, count: int | None = None, noarr: bool = False, timeout: float | None = None
+    topic: str,
+    *,
+    count: int | None = None,
+    noarr: bool = False,
+    nostr: bool = False,
+    width: int | None = None,
+    plot: bool = False,
+    bag: str | None = None,
+    all_topics: bool = False,
+    filter_expr: str | None = None,
+    clear: bool = False,
+    timeout: float | None = None,
 ) -> int:
     """rostopic echo: print messages (or one field) as YAML until ``count`` or interrupted.
 
     Args:
-        topic: A topic, or ``topic/field`` such as ``/turtle1/pose/x``.
+        topic: A topic, or ``topic/field`` such as ``/turtle1/pose/x`` (``""`` with
+            ``all_topics``).
         count: Return after this many messages.
         noarr: Print array lengths instead of their contents.
+        nostr: Print string lengths instead of their contents.
+        width: Pad numbers to this fixed width (at least 2).
+        plot: Print CSV rows (``-p``) instead of YAML.
+        bag: Echo the messages of this bag file instead of a live topic.
+        all_topics: Every message in ``bag``, whatever its topic.
+        filter_expr: A Python expression of ``m`` (the whole message) and ``topic``; only
+            messages for which it is true are printed (``--filter "m.data > 2"``).
+        clear: Clear the terminal before each message (``-c``).
         timeout: Raise if ``count`` messages do not arrive within this many seconds.
 
     Raises:
-        BusError: A bad count or timeout, or nothing within ``timeout``.
+        BusError: A bad count, width or timeout, an unknown topic, or nothing within ``timeout``.
     """
     from workbench.errors import BusError
 
     if count is not None and count < 1:
         raise BusError(f"-n must be at least 1, got {count}")
+    if width is not None and width < 2:
+        raise BusError("Fixed width for numeric values must be at least 2")
+    if all_topics and not bag:
+        raise BusError("Display all option is only valid when echoing from bag files")
+    if not topic and not all_topics:
+        raise BusError("topic must be specified")
     _positive(timeout, "--timeout")
+    printer = _EchoPrinter(noarr=noarr, nostr=nostr, width=width, plot=plot, count=count)
+    printer.prefix = "\033[2J\033[;H" if clear and not plot else ""
+    if filter_expr:
+        printer.keep = _message_filter(filter_expr)
+    if bag:
+        return _echo_bag(bag, topic, printer, all_topics)
     with _cli_node() as node:
-        return _echo(node, topic, count, noarr, timeout)
+        return _echo(node, topic, printer, timeout)
 
 
 def meter(
@@ -254,13 +316,144 @@ def _wait_forever(done: threading.Event) -> bool:
     return True
 
 
-def _echo(node: Any, path: str, count: int | None, noarr: bool, timeout: float | None) -> int:
+def _message_filter(expression: str) -> Callable[[Any, str], bool]:
+    """``--filter``: the expression, of ``m`` and ``topic``, as a test of a message.
+
+    Raises:
+        BusError: The expression is not valid Python, or fails on a message.
+    """
+    import builtins
+
+    from workbench.errors import BusError
+
+    try:
+        code = compile(expression, "--filter", "eval")
+    except SyntaxError as error:
+        raise BusError(f"--filter is not a Python expression: {error.msg}") from None
+
+    def keep(msg: Any, topic: str) -> bool:
+        try:
+            # the user's own expression on their own messages, as rostopic evaluates it
+            return bool(eval(code, {"__builtins__": builtins}, {"m": msg, "topic": topic}))  # noqa: S307
+        except Exception as error:
+            raise BusError(
+                f"--filter {expression!r} failed: {type(error).__name__}: {error}"
+            ) from None
+
+    return keep
+
+
+class _EchoPrinter:
+    """Prints echoed values (YAML documents or CSV rows) and counts them."""
+
+    def __init__(
+        self, *, noarr: bool, nostr: bool, width: int | None, plot: bool, count: int | None
+    ) -> None:
+        self.noarr, self.nostr, self.width, self.plot = noarr, nostr, width, plot
+        self.count = count
+        self.printed = 0
+        self.first = True
+        self.prefix = ""
+        self.keep: Callable[[Any, str], bool] | None = None
+
+    @property
+    def done(self) -> bool:
+        return self.count is not None and self.printed >= self.count
+
+    def show(
+        self,
+        value: Any,
+        *,
+        ros_type: str | None = None,
+        typed: bool = True,
+        stamp_ns: int | None = None,
+    ) -> bool:
+        """Print one value; False once the reader is gone (``| head``) or ``count`` is reached."""
+        from workbench.introspect.echo import format_echo, format_plot, format_plot_header
+
+        if self.plot:
+            text = format_plot(value, stamp_ns, noarr=self.noarr, nostr=self.nostr)
+            if self.first:
+                text = format_plot_header(value, noarr=self.noarr, nostr=self.nostr) + "\n" + text
+        else:
+            text = format_echo(
+                value,
+                noarr=self.noarr,
+                nostr=self.nostr,
+                width=self.width,
+                ros_type=ros_type,
+                typed=typed,
+            )
+        self.first = False
+        try:
+            print(self.prefix + text, flush=True)
+        except BrokenPipeError:  # `| head`: the reader is gone, stop as a shell tool does
+            from workbench.cli.signals import silence_stdout
+
+            silence_stdout()
+            return False
+        self.printed += 1
+        return not self.done
+
+
+def _echo_bag(path: str, topic: str, printer: _EchoPrinter, all_topics: bool) -> int:
+    """rostopic echo -b: the bag's messages of ``topic`` (or a field of them) in time order."""
+    from workbench.bag import read_messages, summarize
+    from workbench.errors import BusError
+    from workbench.introspect.echo import field_type, get_field, split_topic_field
+
+    topic = _absolute(topic).rstrip("/") if topic and not all_topics else ""
+    summary = summarize(path)
+    named = {name: _absolute(name) for name in summary.topic_types()}
+    fields: list[str] = []
+    if all_topics:
+        wanted = list(named)
+    else:
+        try:
+            # the longest topic of the bag the path starts with; the rest is a field path
+            found, fields = split_topic_field(topic, named.values())
+        except BusError:
+            raise BusError(
+                f"topic {topic} is not in {path}",
+                hint=f"its topics are: {', '.join(sorted(named.values())) or 'none'}",
+            ) from None
+        wanted = [name for name, full in named.items() if full == found]
+    for conn in summary.connections.values():
+        if conn.topic in wanted:
+            _learn_type(conn.typename, conn.definition)
+    for record in read_messages(path, wanted):
+        value = record.msg
+        if printer.keep is not None and not printer.keep(value, named[record.topic]):
+            continue
+        ros_type = None
+        if fields:
+            value = get_field(value, fields, topic=named[record.topic])
+            ros_type = field_type(type(record.msg), fields)
+        # a bag gives rostopic no field types: --noarr/--nostr do not reach an echoed field
+        if not printer.show(value, ros_type=ros_type, typed=False, stamp_ns=record.stamp_ns):
+            break
+    return 0
+
+
+def _learn_type(typename: str, definition: str) -> None:
+    """Register a bag's message type workbench lacks, from the definition the bag carries."""
+    from workbench.errors import MessageError
+    from workbench.msgs._store import store
+
+    try:
+        store().message_class(typename)
+    except MessageError:
+        with contextlib.suppress(MessageError):
+            store().register_message(typename, definition)
+
+
+def _echo(node: Any, path: str, printer: _EchoPrinter, timeout: float | None) -> int:
     from workbench.bus import AnyMsg
-    from workbench.introspect.echo import format_echo, get_field
+    from workbench.introspect.echo import field_type, get_field
 
     topic, fields = _resolve_topic(node, path)
     done = threading.Event()
-    state: dict[str, Any] = {"count": 0, "error": None}
+    state: dict[str, Any] = {"error": None}
     lock = threading.Lock()
 
     def callback(msg: Any) -> None:
@@ -268,21 +461,15 @@ def _echo(node: Any, path: str, count: int | None, noarr: bool, timeout: float |
             if done.is_set():
                 return
             try:
+                if printer.keep is not None and not printer.keep(msg, topic):
+                    return
                 value = get_field(msg, fields, topic=topic) if fields else msg
             except Exception as error:  # reported once, from the main thread
                 state["error"] = error
                 done.set()
                 return
-            try:
-                print(format_echo(value, noarr=noarr), flush=True)
-            except BrokenPipeError:  # `| head`: the reader is gone, stop as a shell tool does
-                from workbench.cli.signals import silence_stdout
-
-                silence_stdout()
-                done.set()
-                return
-            state["count"] += 1
-            if count is not None and state["count"] >= count:
+            ros_type = field_type(type(msg), fields) if fields else None
+            if not printer.show(value, ros_type=ros_type):
                 done.set()
 
     node.create_subscription(topic, AnyMsg, callback, queue_size=0)
