@@ -27,15 +27,7 @@ DATA_DIR = Path(__file__).resolve().parent / "data"
 os.environ.setdefault("WORKBENCH_MASTER_URI", "inproc")
 
 
-def require_all() -> bool:
-    return os.environ.get("WORKBENCH_REQUIRE_ALL", "") not in ("", "0")
-
-
-def skip_or_fail(reason: str) -> None:
-    """Skip with ``reason``; under WORKBENCH_REQUIRE_ALL=1, fail instead."""
-    if require_all():
-        pytest.fail(f"WORKBENCH_REQUIRE_ALL=1 forbids skipping: {reason}")
-    pytest.skip(reason)
+from skipping import require_all, skip_or_fail  # noqa: E402,F401 - re-exported for tests
 
 
 @pytest.fixture

@@ -13,7 +13,7 @@ REPO_ROOT = Path(__file__).resolve().parent.parent
 def require_mypy() -> None:
     """Skip (fail under WORKBENCH_REQUIRE_ALL=1) when mypy, a test extra, is not installed."""
     if importlib.util.find_spec("mypy") is None:
-        from conftest import skip_or_fail
+        from skipping import skip_or_fail
 
         skip_or_fail("mypy is not installed (it is in the test extra: pip install -e '.[test]')")
 

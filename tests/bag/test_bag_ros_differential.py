@@ -12,7 +12,7 @@ import subprocess
 
 import numpy as np
 import pytest
-from conftest import skip_or_fail
+from skipping import skip_or_fail
 
 from workbench.bag import BagWriter, read_messages
 from workbench.msgs.geometry_msgs import Twist, Vector3

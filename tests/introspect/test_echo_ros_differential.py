@@ -41,7 +41,7 @@ from typing import Any
 
 import numpy as np
 import pytest
-from conftest import skip_or_fail
+from skipping import skip_or_fail
 
 from workbench.bag import BagWriter, read_messages
 from workbench.cli import topic as topic_cli

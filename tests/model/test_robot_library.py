@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from conftest import skip_or_fail
+from skipping import skip_or_fail
 
 from workbench.errors import ModelError
 from workbench.model import load_robot, resolve_robot_path

@@ -15,7 +15,7 @@ import json
 import subprocess
 
 import pytest
-from conftest import skip_or_fail
+from skipping import skip_or_fail
 
 from workbench.msgs import md5sum
 
