@@ -44,7 +44,7 @@ from workbench.tf.exceptions import TransformException
 
 ROS_PYTHON = "/usr/bin/python3"
 DRIVER = Path(__file__).with_name("tf2_driver.py")
-SCENARIOS = 120
+SCENARIOS = 200
 SEED = 20240714
 
 Step = list[Any]

@@ -172,10 +172,10 @@ class BufferCore:
 
     def _validate(self, function: str, frame: str) -> int:
         """The id of ``frame``, checked as tf2's validateFrameId checks it (with its texts)."""
-        if not isinstance(frame, str):
+        if not isinstance(frame, str):  # tf2_py refuses these with a TypeError
             raise InvalidArgumentException(
-                f"Invalid argument passed to {function} in tf2 frame_ids cannot be empty",
-                f"(frame ids are strings, got {type(frame).__name__} {frame!r})",
+                f"Invalid argument passed to {function}: frame ids are strings, "
+                f"got {type(frame).__name__} {frame!r}"
             )
         if frame == "":
             raise InvalidArgumentException(
@@ -464,29 +464,35 @@ class BufferCore:
         """
         if target_id == source_id:
             return _IDENTITY
-        top, from_source, why = self._climb(source_id, t, target_id, target_id)
+        # T_frame_source for every frame the source walk reached (its last one included)
+        below: dict[int, tuple[float, ...]] = {}
+        top, from_source, why = self._climb(source_id, t, target_id, below)
         if top == target_id:
             return from_source
-        end, from_target, why_target = self._climb(target_id, t, top, source_id)
+        # tf2's target walk goes on to ``top``; it stops here at the first frame of the
+        # source walk instead: the links from there to ``top`` all had data (the source
+        # walk used them), so the outcome is the same, with fewer products.
+        end, from_target, why_target = self._climb(target_id, t, -1, below)
         if why_target is not None:
             raise self._extrapolation(why_target, target_id, source_id, end)
-        if end == source_id:
-            return inverse(from_target)
-        if end == top:
-            return compose(inverse(from_target), from_source)
+        if end in below:
+            return compose(inverse(from_target), below[end])
         if why is not None:
             raise self._extrapolation(why, target_id, source_id, top)
         raise self._connectivity(target_id, source_id)
 
     def _climb(
-        self, frame: int, t: int, stop: int, stop_too: int
+        self, frame: int, t: int, goal: int, below: dict[int, tuple[float, ...]]
     ) -> tuple[int, tuple[float, ...], str | None]:
         """Walk up from ``frame`` composing ``T_current_start``, link by link at ``t``.
 
-        Stops on reaching ``stop`` or ``stop_too`` (before using its link), at a
-        frame without a parent (a root), or at a frame whose link has no data at
-        ``t``. Returns ``(frame reached, accumulated transform, why)``, ``why`` being
-        tf2's text for the missing data or ``None``.
+        With ``goal >= 0`` (the source walk) it stops on reaching ``goal`` and records
+        ``T_current_start`` in ``below`` for every other frame it reaches; with
+        ``goal < 0`` (the target walk) it stops on reaching a frame in ``below``
+        (before using that frame's link). Either walk also stops at a frame without a
+        parent (a root) or one whose link has no data at ``t``. Returns ``(frame
+        reached, accumulated transform, why)``, ``why`` being tf2's text for the
+        missing data or ``None``.
 
         Raises:
             LookupException: more than MAX_GRAPH_DEPTH links: the tree has a loop.
@@ -496,8 +502,13 @@ class BufferCore:
         tx = ty = tz = qx = qy = qz = 0.0
         qw = 1.0
         depth = 0
+        record = goal >= 0
         while True:
-            if frame in (stop, stop_too):
+            if record:
+                if frame == goal:
+                    return frame, (tx, ty, tz, qx, qy, qz, qw), None
+                below[frame] = (tx, ty, tz, qx, qy, qz, qw)
+            elif frame in below:
                 return frame, (tx, ty, tz, qx, qy, qz, qw), None
             cache = caches[frame]
             if cache is None:
