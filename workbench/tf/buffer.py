@@ -230,7 +230,7 @@ class Buffer(BufferCore):
         """
         why = ""
         if timeout:
-            ok, why = self._wait(lambda: self.can_lookup(target_frame, source_frame, time), timeout)
+            _, why = self._wait(lambda: self.can_lookup(target_frame, source_frame, time), timeout)
         with self._lock:
             try:
                 result = self.lookup(target_frame, source_frame, time)
@@ -261,7 +261,7 @@ class Buffer(BufferCore):
         """
         why = ""
         if timeout:
-            ok, why = self._wait(
+            _, why = self._wait(
                 lambda: self.can_transform_full_core(
                     target_frame, target_time, source_frame, source_time, fixed_frame
                 ),

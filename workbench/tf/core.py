@@ -8,9 +8,16 @@ requested time until the walks meet, composing the transforms on the way.
 
 Conventions (tf2's): ``lookup(target, source, t)`` returns ``T_target_source``,
 the pose of ``source`` in ``target`` -- it maps a point expressed in ``source``
-into ``target``. Time 0 means "the latest time at which every link on the
-path has data". Translations are metres, rotations unit quaternions ``(x, y, z, w)``,
-stamps integer nanoseconds internally and seconds or Time objects at the API.
+into ``target``. Time 0 means "the latest time at which every link between the
+two frames has data". Translations are metres, rotations unit quaternions
+``(x, y, z, w)``, stamps integer nanoseconds internally and seconds or Time objects
+at the API.
+
+Failures follow tf2 (geometry2 Noetic, 0.7.7): the same checks in the same order,
+so a bad lookup raises the exception class tf2 raises, and the first line of its
+message is tf2's text; a second line may add detail. Unlike tf2, a quaternion
+accepted by ``set_transform`` (squared norm within 0.01 of 1) is stored normalised,
+so results are proper rotations where tf2 would carry the error along.
 """
 
 from __future__ import annotations
