@@ -20,7 +20,6 @@ from workbench.tf import (
     ExtrapolationException,
     InvalidArgumentException,
     LookupException,
-    TimeoutException,
     TransformDataWarning,
 )
 from workbench.tf import transformations as tft
@@ -124,15 +123,30 @@ def test_lookup_without_timeout_raises_core_errors():
         buf.lookup_transform("base_link", "turtle1", Time())
 
 
-def test_waiting_lookup_times_out_with_timeout_exception():
-    """waitForTransform past its timeout: TimeoutException naming frames, time and the reason."""
+def test_waiting_lookup_raises_the_core_error_after_its_timeout():
+    """tf2_ros Buffer.lookup_transform(timeout): can_transform waits, then the core lookup raises.
+
+    The exception is the one tf2 raises without waiting (never TimeoutException), with
+    tf2's text; a second line says how long it waited.
+    """
     buf = Buffer()
     buf.set_transform(stamped("world", "turtle1", 10.0), "x")
-    with pytest.raises(TimeoutException) as exc:
+    with pytest.raises(ExtrapolationException) as exc:
         buf.lookup_transform("world", "turtle1", Time(20.0), timeout=Duration(0, 50_000_000))
-    text = str(exc.value)
-    assert "0.05 s" in text and "'turtle1' in 'world'" in text and "20.000000000" in text
+    assert str(exc.value).split("\n") == [
+        "Lookup would require extrapolation at time 20.000000000, but only time 10.000000000 "
+        "is in the buffer, when looking up transform from frame [turtle1] to frame [world]",
+        "(no data for frame 'turtle1' in 'world' at that time)",
+        "(still failing after waiting 0.05 s)",
+    ]
     assert not buf.can_transform("world", "turtle2", Time(), timeout=0.05)
+    assert buf.can_transform("world", "turtle2", Time(), timeout=0.05, return_debug_tuple=True) == (
+        False,
+        "canTransform: source_frame turtle2 does not exist.",
+    )
+    with pytest.raises(LookupException, match="fixed_frame does not exist. \n") as exc:
+        buf.lookup_transform_full("world", 0, "turtle1", 0, "map", timeout=0.05)
+    assert str(exc.value).endswith("(still failing after waiting 0.05 s)")
 
 
 def test_waiting_lookup_succeeds_when_data_arrives_from_another_thread():
@@ -155,8 +169,14 @@ def test_waiting_uses_the_buffer_clock_and_a_stopped_clock_cannot_hang():
     buf = Buffer()
     frozen = 1_000_000_000
     buf.use_clock(lambda: frozen)  # a simulated clock that never advances
-    with pytest.raises(TimeoutException, match="clock stopped"):
+    with pytest.raises(LookupException, match="the clock stopped while waiting"):
         buf.lookup_transform("world", "turtle1", 0, timeout=0.05)
+    ok, why = buf.can_transform("world", "turtle1", 0, timeout=0.05, return_debug_tuple=True)
+    assert not ok
+    assert (
+        why
+        == "canTransform: target_frame world does not exist. canTransform: source_frame turtle1 does not exist.\n(the clock stopped while waiting)"
+    )
 
 
 def test_lookup_full_message():
@@ -201,7 +221,7 @@ def test_waiting_timeout_is_measured_in_simulated_time():
         sim = threading.Thread(target=simulate, daemon=True)
         sim.start()
         # 1 simulated second passes in about 0.1 s of wall time: too short
-        with pytest.raises(TimeoutException, match="Timed out after 1 s"):
+        with pytest.raises(LookupException, match="still failing after waiting 1 s"):
             buf.lookup_transform("world", "turtle1", Time(102), timeout=Duration(1))
         out = buf.lookup_transform("world", "turtle1", Time(102), timeout=Duration(5))
         assert out.transform.translation.x == 1.0

@@ -17,6 +17,7 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from workbench.errors import TransformError
+from workbench.msgs import Time
 from workbench.tf import (
     BufferCore,
     ConnectivityException,
@@ -24,6 +25,7 @@ from workbench.tf import (
     InvalidArgumentException,
     LookupException,
     TransformDataWarning,
+    TransformException,
 )
 
 IDENTITY_Q = (0.0, 0.0, 0.0, 1.0)
@@ -561,5 +563,183 @@ def test_all_frames_as_yaml_and_string():
     assert buf.all_frames_as_string() == "Frame turtle1 exists with parent world.\n"
     buf.clear()
     assert buf.all_frames_as_yaml() == "[]"
-    with pytest.raises(ExtrapolationException, match="cache is empty"):
+    assert buf.all_frames_as_string() == "Frame turtle1 exists with parent NO_PARENT.\n"
+    with pytest.raises(ExtrapolationException) as exc:
         buf.lookup("world", "turtle1", 1.0)
+    # tf2's cache gives no text when empty: only the walk's part remains
+    assert str(exc.value).split("\n") == [
+        ", when looking up transform from frame [turtle1] to frame [world]",
+        "(frame 'turtle1' has no data: its cache is empty since a clear())",
+    ]
+
+
+def test_clear_keeps_static_transforms():
+    """tf2's StaticCache::clearList does nothing: /tf_static data survives BufferCore::clear."""
+    buf = BufferCore()
+    put(buf, "base_link", "laser", 0, (0.1, 0, 0.2), static=True)
+    put(buf, "odom", "base_link", 5.0, (1.0, 0, 0))
+    buf.clear()
+    assert buf.lookup("base_link", "laser", 0).translation == pytest.approx((0.1, 0, 0.2))
+    with pytest.raises(ExtrapolationException):
+        buf.lookup("odom", "laser", 5.0)
+
+
+# --- tf2's checking order and texts (the differential test checks them against tf2) ------
+
+
+def test_extrapolation_texts_carry_the_amount():
+    """TimeCache::findClosest (Noetic): the past and future texts say by how much."""
+    buf = BufferCore()
+    put(buf, "world", "turtle1", 100.0)
+    put(buf, "world", "turtle1", 101.5)
+    with pytest.raises(ExtrapolationException) as past:
+        buf.lookup("world", "turtle1", 95.195468320)
+    assert str(past.value).split("\n")[0] == (
+        "Lookup would require extrapolation 4.804531680s into the past.  Requested time "
+        "95.195468320 but the earliest data is at time 100.000000000, when looking up "
+        "transform from frame [turtle1] to frame [world]"
+    )
+    with pytest.raises(ExtrapolationException) as future:
+        buf.lookup("turtle1", "world", 102.0)
+    assert str(future.value).split("\n")[0] == (
+        "Lookup would require extrapolation 0.500000000s into the future.  Requested time "
+        "102.000000000 but the latest data is at time 101.500000000, when looking up "
+        "transform from frame [world] to frame [turtle1]"
+    )
+
+
+def test_epoch_times_print_as_ros_time_to_sec():
+    """ros::Time::toSec is sec + 1e-9 * nsec in doubles: its digits, not those of ns / 1e9."""
+    buf = BufferCore()
+    put(buf, "world", "turtle1", Time(1_700_000_000, 123_456_789))
+    with pytest.raises(ExtrapolationException) as exc:
+        buf.lookup("world", "turtle1", Time(1_700_000_001, 0))
+    assert "but only time 1700000000.123456717 is in the buffer," in str(exc.value)
+
+
+def test_unknown_and_invalid_frames_first_line_is_tf2s():
+    """validateFrameId's texts as the first line; workbench's hints on the second."""
+    buf = BufferCore()
+    put(buf, "world", "turtle1", 1.0)
+    with pytest.raises(LookupException) as exc:
+        buf.lookup("world", "turtle3", 1.0)
+    assert str(exc.value).split("\n") == [
+        '"turtle3" passed to lookupTransform argument source_frame does not exist. ',
+        "(known frames: turtle1, world)",
+    ]
+    with pytest.raises(InvalidArgumentException) as exc:
+        buf.lookup("/world", "turtle1", 1.0)
+    assert str(exc.value).split("\n") == [
+        'Invalid argument "/world" passed to lookupTransform argument target_frame in tf2 '
+        "frame_ids cannot start with a '/' like: ",
+        "(use 'world')",
+    ]
+
+
+def test_target_walk_failure_is_reported_before_the_source_walk():
+    """walkToTopParent: missing data on the target's way up fails at once.
+
+    The source's walk stops at its own missing link and the target's walk then fails on
+    its own: tf2 reports the target's link, not the source's.
+    """
+    buf = BufferCore()
+    put(buf, "world", "turtle1", 10.0)
+    put(buf, "world", "turtle2", 20.0)
+    with pytest.raises(ExtrapolationException, match="only time 20.000000000 is in the buffer"):
+        buf.lookup("turtle2", "turtle1", 15.0)
+    with pytest.raises(ExtrapolationException, match="only time 10.000000000 is in the buffer"):
+        buf.lookup("turtle1", "turtle2", 15.0)
+    # a source link without data, the target in another tree: the extrapolation wins
+    put(buf, "map", "robot", 10.0)
+    put(buf, "map", "robot", 15.0)
+    with pytest.raises(
+        ExtrapolationException, match="from frame \\[turtle1\\] to frame \\[robot\\]"
+    ):
+        buf.lookup("robot", "turtle1", 15.0)
+    with pytest.raises(ConnectivityException) as exc:
+        buf.lookup("robot", "turtle1", 10.0)
+    assert str(exc.value) == (
+        "Could not find a connection between 'robot' and 'turtle1' because they are not part "
+        "of the same tree.Tf has two or more unconnected trees."
+    )
+
+
+def test_lookup_full_validates_all_frames_then_looks_up_source_first():
+    """BufferCore::lookupTransform with a fixed frame: target, source, fixed validated first;
+    then source -> fixed at the source time, then fixed -> target at the target time."""
+    buf = BufferCore()
+    put(buf, "world", "turtle1", 10.0)
+    put(buf, "world", "turtle2", 10.0)
+    put(buf, "map", "robot", 10.0)
+    with pytest.raises(LookupException, match="argument target_frame"):
+        buf.lookup_full("ghost", 10.0, "turtle1", 10.0, "nowhere")
+    with pytest.raises(LookupException, match="argument fixed_frame"):
+        buf.lookup_full("turtle2", 10.0, "turtle1", 10.0, "nowhere")
+    # both halves fail: the source half is reported
+    with pytest.raises(
+        ExtrapolationException, match="from frame \\[turtle1\\] to frame \\[world\\]"
+    ):
+        buf.lookup_full("turtle2", 11.0, "turtle1", 12.0, "world")
+    with pytest.raises(ConnectivityException, match="between 'world' and 'robot'"):
+        buf.lookup_full("robot", 10.0, "robot", 10.0, "world")
+
+
+def test_get_latest_common_time_errors_as_tf2_py():
+    """tf2_py get_latest_common_time: unknown frames (even against themselves) are
+    LookupException; disconnected frames the base TransformException."""
+    buf = BufferCore()
+    put(buf, "world", "turtle1", 10.0)
+    put(buf, "map", "robot", 10.0)
+    with pytest.raises(LookupException) as exc:
+        buf.get_latest_common_time("ghost", "ghost")
+    assert (
+        str(exc.value).split("\n")[0] == '"ghost" passed to get_latest_common_time does not exist. '
+    )
+    with pytest.raises(InvalidArgumentException, match="get_latest_common_time"):
+        buf.get_latest_common_time("", "world")
+    with pytest.raises(TransformException) as exc:
+        buf.get_latest_common_time("world", "robot")
+    assert type(exc.value) is TransformException
+    assert "not part of the same tree" in str(exc.value)
+    assert buf.get_latest_common_time("turtle1", "turtle1") == 10_000_000_000
+    assert buf.get_latest_common_time("world", "world") == 0
+
+
+def test_can_transform_strings_are_tf2s(caplog):
+    """BufferCore::canTransform: its own texts for unknown frames, "" (and a logged
+    warning) for empty or '/' frames, the lookup's text otherwise."""
+    buf = BufferCore()
+    put(buf, "world", "turtle1", 10.0)
+    assert buf.can_transform_core("ghost", "spook", 10.0) == (
+        False,
+        "canTransform: target_frame ghost does not exist. "
+        "canTransform: source_frame spook does not exist.",
+    )
+    with caplog.at_level("WARNING", logger="workbench.tf"):
+        assert buf.can_transform_core("world", "/turtle1", 10.0) == (False, "")
+    assert "cannot start with a '/'" in caplog.text
+    assert buf.can_transform_core("", "", 10.0) == (True, "")  # target == source first
+    ok, why = buf.can_transform_core("world", "turtle1", 11.0)
+    assert not ok and why.startswith("Lookup would require extrapolation at time 11.000000000")
+    assert buf.can_transform_full_core("world", 10.0, "turtle1", 10.0, "map") == (
+        False,
+        "fixed_frame: mapdoes not exist.",
+    )
+    assert buf.can_transform_full_core("world", 10.0, "turtle1", 10.0, "world") == (True, "")
+    # can_lookup: the first line of what lookup() would raise (what tf_echo prints)
+    assert buf.can_lookup("world", "ghost", 10.0) == (
+        False,
+        '"ghost" passed to lookupTransform argument source_frame does not exist. ',
+    )
+
+
+def test_lookup_full_quaternion_sign_is_tf2s():
+    """tf2 composes the two halves as matrices: the result's quaternion has w > 0 when the
+    rotation's trace is positive."""
+    buf = BufferCore()
+    half_turn = (0.0, 0.0, math.sin(0.4), math.cos(0.4))
+    put(buf, "world", "a", 1.0, (0, 0, 0), half_turn)
+    put(buf, "world", "b", 1.0, (0, 0, 0), (0.0, 0.0, -math.sin(0.4), -math.cos(0.4)))
+    r = buf.lookup_full("a", 1.0, "b", 1.0, "world")
+    assert r.rotation[3] > 0
+    assert_pose(r, (0, 0, 0), IDENTITY_Q)

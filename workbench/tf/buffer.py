@@ -4,11 +4,13 @@ It adds the message-facing API (``geometry_msgs/TransformStamped`` in and out,
 ``transform()`` for stamped points, poses, vectors and quaternions), thread
 safety, and waiting lookups: with ``timeout > 0`` a call waits for the data to
 arrive -- spinning the bus when a :class:`~workbench.tf.TransformListener` feeds
-the buffer, else sleeping until another thread inserts data -- and raises
-:class:`TimeoutException` when the timeout passes. The timeout is measured on
-the buffer's clock (the bus clock, wall or simulated); a simulated clock that
-stops advancing ends the wait after the same span of wall time, so a paused
-simulation cannot hang the caller.
+the buffer, else sleeping until another thread inserts data. As in tf2_ros, a
+lookup still impossible when the timeout passes raises the error it raises without
+waiting (``LookupException``, ``ExtrapolationException``, ...), with a second line
+saying how long it waited. The timeout is measured on the buffer's clock (the bus
+clock, wall or simulated); a simulated clock that stops advancing ends the wait
+after the same span of wall time, so a paused simulation cannot hang the caller
+(tf2_ros would wait for ever).
 """
 
 from __future__ import annotations
@@ -38,6 +40,9 @@ _CORE_ERRORS = (
     ExtrapolationException,
     InvalidArgumentException,
 )
+
+
+_CLOCK_STOPPED = "(the clock stopped while waiting)"
 
 
 def _wall_ns() -> int:
@@ -90,6 +95,18 @@ class Buffer(BufferCore):
     def can_lookup(self, target: str, source: str, time: Any = 0) -> tuple[bool, str]:
         with self._lock:
             return super().can_lookup(target, source, time)
+
+    def can_transform_core(self, target: str, source: str, time: Any = 0) -> tuple[bool, str]:
+        with self._lock:
+            return super().can_transform_core(target, source, time)
+
+    def can_transform_full_core(
+        self, target: str, target_time: Any, source: str, source_time: Any, fixed_frame: str
+    ) -> tuple[bool, str]:
+        with self._lock:
+            return super().can_transform_full_core(
+                target, target_time, source, source_time, fixed_frame
+            )
 
     def get_latest_common_time(self, target: str, source: str) -> int:
         with self._lock:
@@ -178,7 +195,7 @@ class Buffer(BufferCore):
             if now != last_clock:
                 last_clock, last_move = now, _time.monotonic()
             elif _time.monotonic() - last_move > timeout_ns / 1e9:
-                return False, why + " (the clock stopped while waiting)"
+                return False, why + "\n" + _CLOCK_STOPPED
 
     def _timed_out(self, what: str, timeout: Any, why: str) -> TimeoutException:
         return TimeoutException(
@@ -186,6 +203,13 @@ class Buffer(BufferCore):
         )
 
     # --- lookups ------------------------------------------------------------------
+
+    def _after_waiting(self, exc: TransformException, timeout: Any, why: str) -> TransformException:
+        """``exc`` again, its second line saying the lookup failed after waiting."""
+        note = f"(still failing after waiting {to_ns(timeout) / 1e9:g} s"
+        note += "; the clock stopped while waiting)" if why.endswith(_CLOCK_STOPPED) else ")"
+        detail = f"{exc.detail}\n{note}" if exc.detail else note
+        return type(exc)(exc.tf2_message, detail)
 
     def lookup_transform(
         self, target_frame: str, source_frame: str, time: Any = 0, timeout: Any = 0.0
@@ -200,16 +224,24 @@ class Buffer(BufferCore):
 
         Raises:
             LookupException, ConnectivityException, ExtrapolationException,
-            InvalidArgumentException: without a timeout, as tf2 raises them.
-            TimeoutException: with a timeout, when it passed without success.
+            InvalidArgumentException: as tf2 raises them; with a timeout, when the
+            lookup is still impossible after waiting (as tf2_ros: it waits with
+            ``can_transform``, then looks up).
         """
+        why = ""
         if timeout:
-            self._wait_or_raise(target_frame, source_frame, time, timeout)
+            _, why = self._wait(lambda: self.can_lookup(target_frame, source_frame, time), timeout)
         with self._lock:
-            result = self.lookup(target_frame, source_frame, time)
+            try:
+                result = self.lookup(target_frame, source_frame, time)
+            except _CORE_ERRORS as exc:
+                if not timeout:
+                    raise
+                raise self._after_waiting(exc, timeout, why) from None
         return to_msg(result)
 
     def _wait_or_raise(self, target: str, source: str, time: Any, timeout: Any) -> None:
+        """Wait for a lookup to become possible; :class:`TimeoutException` if it does not."""
         ok, why = self._wait(lambda: self.can_lookup(target, source, time), timeout)
         if not ok:
             raise self._timed_out(f"'{source}' in '{target}' at {_fmt(time)}", timeout, why)
@@ -223,14 +255,27 @@ class Buffer(BufferCore):
         fixed_frame: str,
         timeout: Any = 0.0,
     ) -> Any:
-        """Time travel (see :meth:`BufferCore.lookup_full`), as a TransformStamped."""
+        """Time travel (see :meth:`BufferCore.lookup_full`), as a TransformStamped.
+
+        With a timeout, waits as :meth:`can_transform_full` does, then looks up.
+        """
+        why = ""
         if timeout:
-            self._wait_or_raise(target_frame, fixed_frame, target_time, timeout)
-            self._wait_or_raise(fixed_frame, source_frame, source_time, timeout)
-        with self._lock:
-            result = self.lookup_full(
-                target_frame, target_time, source_frame, source_time, fixed_frame
+            _, why = self._wait(
+                lambda: self.can_transform_full_core(
+                    target_frame, target_time, source_frame, source_time, fixed_frame
+                ),
+                timeout,
             )
+        with self._lock:
+            try:
+                result = self.lookup_full(
+                    target_frame, target_time, source_frame, source_time, fixed_frame
+                )
+            except _CORE_ERRORS as exc:
+                if not timeout:
+                    raise
+                raise self._after_waiting(exc, timeout, why) from None
         return to_msg(result)
 
     def can_transform(
@@ -241,8 +286,14 @@ class Buffer(BufferCore):
         timeout: Any = 0.0,
         return_debug_tuple: bool = False,
     ) -> bool | tuple[bool, str]:
-        """Whether the lookup would succeed (waiting up to ``timeout``); never raises for frames."""
-        ok, why = self._wait(lambda: self.can_lookup(target_frame, source_frame, time), timeout)
+        """Whether the lookup would succeed (waiting up to ``timeout``); never raises for frames.
+
+        The debug tuple's text is tf2's ``canTransform`` error string (``""`` for an
+        empty or ``/``-prefixed frame, whose warning is logged).
+        """
+        ok, why = self._wait(
+            lambda: self.can_transform_core(target_frame, source_frame, time), timeout
+        )
         return (ok, why) if return_debug_tuple else ok
 
     def can_transform_full(
@@ -256,15 +307,12 @@ class Buffer(BufferCore):
         return_debug_tuple: bool = False,
     ) -> bool | tuple[bool, str]:
         """Whether :meth:`lookup_transform_full` would succeed (waiting up to ``timeout``)."""
-
-        def check() -> tuple[bool, str]:
-            try:
-                self.lookup_full(target_frame, target_time, source_frame, source_time, fixed_frame)
-            except _CORE_ERRORS as exc:
-                return False, str(exc)
-            return True, ""
-
-        ok, why = self._wait(check, timeout)
+        ok, why = self._wait(
+            lambda: self.can_transform_full_core(
+                target_frame, target_time, source_frame, source_time, fixed_frame
+            ),
+            timeout,
+        )
         return (ok, why) if return_debug_tuple else ok
 
     # --- transforming data ------------------------------------------------------------

@@ -22,13 +22,15 @@ class NoData(Exception):  # noqa: N818 - internal signal, never escapes the buff
     """Raised inside the buffer when a cache has no data at the requested time."""
 
 
-def cache_empty() -> str:
-    """tf2's text for a frame whose cache holds nothing."""
-    return "Unable to lookup transform, cache is empty"
+def seconds_text(ns: int) -> str:
+    """A time or a (non-negative) duration as tf2 prints it: ``%.9f`` of ``sec + 1e-9 * nsec``.
 
-
-def _sec(ns: int) -> str:
-    return f"{ns / 1e9:.9f}"
+    tf2 converts ``ros::Time`` to seconds as ``sec + 1e-9 * nsec`` in doubles; at Unix-epoch
+    magnitudes that differs in the last printed digits from ``ns / 1e9``, so the same
+    arithmetic is used here to print the same digits.
+    """
+    sec, nsec = divmod(ns, 1_000_000_000)
+    return f"{sec + 1e-9 * nsec:.9f}"
 
 
 class TimeCache:
@@ -134,23 +136,26 @@ class TimeCache:
         raise NoData(self._explain(t))
 
     def _explain(self, t: int) -> str:
+        """tf2's text for no data at ``t`` (TimeCache::findClosest); ``""`` when empty, as tf2."""
         stamps = self.stamps
         if len(stamps) == self.start:
-            return "Unable to lookup transform, cache is empty"
+            return ""
         first, last = stamps[self.start], stamps[-1]
         if first == last:
             return (
-                f"Lookup would require extrapolation at time {_sec(t)}, "
-                f"but only time {_sec(last)} is in the buffer"
+                f"Lookup would require extrapolation at time {seconds_text(t)}, "
+                f"but only time {seconds_text(last)} is in the buffer"
             )
         if t > last:
             return (
-                "Lookup would require extrapolation into the future.  "
-                f"Requested time {_sec(t)} but the latest data is at time {_sec(last)}"
+                f"Lookup would require extrapolation {seconds_text(t - last)}s into the future.  "
+                f"Requested time {seconds_text(t)} but the latest data is at time "
+                f"{seconds_text(last)}"
             )
         return (
-            "Lookup would require extrapolation into the past.  "
-            f"Requested time {_sec(t)} but the earliest data is at time {_sec(first)}"
+            f"Lookup would require extrapolation {seconds_text(first - t)}s into the past.  "
+            f"Requested time {seconds_text(t)} but the earliest data is at time "
+            f"{seconds_text(first)}"
         )
 
 
@@ -195,7 +200,7 @@ class StaticCache:
         return None
 
     def clear(self) -> None:
-        self.entry = None
+        """Nothing: tf2 keeps static transforms when the buffer is cleared."""
 
     def __len__(self) -> int:
         return 0 if self.entry is None else 1
@@ -208,5 +213,5 @@ class StaticCache:
 
     def gather(self, t: int) -> Entry:
         if self.entry is None:
-            raise NoData("Unable to lookup transform, cache is empty")
+            raise NoData("")
         return self.entry

@@ -8,13 +8,21 @@ requested time until the walks meet, composing the transforms on the way.
 
 Conventions (tf2's): ``lookup(target, source, t)`` returns ``T_target_source``,
 the pose of ``source`` in ``target`` -- it maps a point expressed in ``source``
-into ``target``. Time 0 means "the latest time at which every link on the
-path has data". Translations are metres, rotations unit quaternions ``(x, y, z, w)``,
-stamps integer nanoseconds internally and seconds or Time objects at the API.
+into ``target``. Time 0 means "the latest time at which every link between the
+two frames has data". Translations are metres, rotations unit quaternions
+``(x, y, z, w)``, stamps integer nanoseconds internally and seconds or Time objects
+at the API.
+
+Failures follow tf2 (geometry2 Noetic, 0.7.7): the same checks in the same order,
+so a bad lookup raises the exception class tf2 raises, and the first line of its
+message is tf2's text; a second line may add detail. Unlike tf2, a quaternion
+accepted by ``set_transform`` (squared norm within 0.01 of 1) is stored normalised,
+so results are proper rotations where tf2 would carry the error along.
 """
 
 from __future__ import annotations
 
+import logging
 import math
 import warnings
 from bisect import bisect_left
@@ -22,13 +30,14 @@ from collections.abc import Sequence
 from math import acos, sin
 from typing import Any, NamedTuple
 
-from workbench.tf.cache import NoData, StaticCache, TimeCache, cache_empty
+from workbench.tf.cache import NoData, StaticCache, TimeCache
 from workbench.tf.exceptions import (
     ConnectivityException,
     ExtrapolationException,
     InvalidArgumentException,
     LookupException,
     TransformDataWarning,
+    TransformException,
 )
 from workbench.tf.timeconv import to_ns
 
@@ -40,6 +49,7 @@ DEFAULT_CACHE_TIME = 10.0
 DEFAULT_AUTHORITY = "default_authority"
 
 _IDENTITY = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
+_LOG = logging.getLogger("workbench.tf")
 
 
 class StampedTransform(NamedTuple):
@@ -90,6 +100,30 @@ def inverse(a: Sequence[float]) -> tuple[float, ...]:
     return compose((0.0, 0.0, 0.0, -qx, -qy, -qz, qw), (-x, -y, -z, 0.0, 0.0, 0.0, 1.0))
 
 
+def _matrix_sign(v: tuple[float, ...]) -> tuple[float, ...]:
+    """``v`` with its quaternion's sign as tf2 gives it after a trip through a rotation matrix.
+
+    tf2 composes the two halves of a fixed-frame lookup as ``tf2::Transform`` (a 3x3
+    matrix) and reads the quaternion back from the matrix, which fixes its sign: ``w``
+    is positive when the matrix trace is, else the component of the largest diagonal
+    element is. ``q`` and ``-q`` are the same rotation; this only makes the numbers
+    equal to tf2's.
+    """
+    x, y, z, w = v[3], v[4], v[5], v[6]
+    d0 = 1.0 - 2.0 * (y * y + z * z)
+    d1 = 1.0 - 2.0 * (x * x + z * z)
+    d2 = 1.0 - 2.0 * (x * x + y * y)
+    if d0 + d1 + d2 > 0.0:
+        key = w
+    elif d0 < d1:
+        key = z if d1 < d2 else y
+    else:
+        key = z if d0 < d2 else x
+    if key < 0.0:
+        return (v[0], v[1], v[2], -x, -y, -z, -w)
+    return v
+
+
 def _strip_slash(name: str) -> str:
     return name[1:] if name.startswith("/") else name
 
@@ -133,26 +167,39 @@ class BufferCore:
         return list(self._names[1:])
 
     def clear(self) -> None:
-        """Forget all stored transforms (frames stay known, like tf2's ``clear``)."""
+        """Forget the stored dynamic transforms, as tf2's ``clear``.
+
+        Frames stay known, and static transforms stay (tf2 keeps them: ``/tf_static``
+        is latched and not sent again when a listener clears its buffer after time
+        jumped back, as when a bag loops).
+        """
         for cache in self._caches:
             if cache is not None:
                 cache.clear()
 
     def _validate(self, function: str, frame: str) -> int:
-        if not isinstance(frame, str) or frame == "":
+        """The id of ``frame``, checked as tf2's validateFrameId checks it (with its texts)."""
+        if not isinstance(frame, str):  # tf2_py refuses these with a TypeError
+            raise InvalidArgumentException(
+                f"Invalid argument passed to {function}: frame ids are strings, "
+                f"got {type(frame).__name__} {frame!r}"
+            )
+        if frame == "":
             raise InvalidArgumentException(
                 f"Invalid argument passed to {function} in tf2 frame_ids cannot be empty"
             )
         if frame.startswith("/"):
             raise InvalidArgumentException(
                 f'Invalid argument "{frame}" passed to {function} in tf2 frame_ids cannot '
-                f"start with a '/' like: (use '{frame.lstrip('/')}')"
+                "start with a '/' like: ",
+                f"(use '{frame.lstrip('/')}')",
             )
         fid = self._ids.get(frame)
         if fid is None:
-            known = ", ".join(sorted(self._names[1:])) or "none yet"
+            known = ", ".join(sorted(self._names[1:]))
             raise LookupException(
-                f'"{frame}" passed to {function} does not exist. (known frames: {known})'
+                f'"{frame}" passed to {function} does not exist. ',
+                f"(known frames: {known})" if known else "(no frames are known yet)",
             )
         return fid
 
@@ -304,17 +351,61 @@ class BufferCore:
         return False
 
     # --- lookups --------------------------------------------------------------
+    #
+    # The walks follow tf2's BufferCore (buffer_core.cpp) step for step, because which
+    # exception a bad lookup raises depends on the order things are checked in:
+    #
+    # * time 0 first becomes the latest common time (getLatestCommonTime), which can
+    #   itself fail (disconnected frames, a loop);
+    # * then the source walks up to its root, stopping early at the target or at the
+    #   first link without data at the time;
+    # * then the target walks up until it reaches where the source walk stopped, or
+    #   the source. A link without data on this walk fails at once; if the walk ends
+    #   at another root, the source walk's missing data is reported if there was
+    #   some, else the trees are not connected.
 
     def latest_common_time_ns(self, target_id: int, source_id: int) -> int:
-        """The newest time at which every link between two frames has data (0: all static)."""
+        """The newest time every link between two frames has data (0: all static).
+
+        tf2's getLatestCommonTime: the source's links are listed up to its root, then
+        the target walks up until one of its links has a parent that a source link
+        has; the answer is the oldest "newest stamp" of the links up to there
+        (static links, stamped 0, do not count).
+
+        Raises:
+            ConnectivityException: the frames are in different trees.
+            LookupException: the tree has a loop.
+        """
         caches = self._caches
         if source_id == target_id:
             cache = caches[source_id]
             return cache.latest()[0] if cache is not None else 0
-        big = 1 << 62
-        chain: dict[int, int] = {}  # frame on the source's way up -> min stamp up to it
-        common = big
+        never = 1 << 64
+        source_links: list[tuple[int, int]] = []  # (newest stamp, parent) up from the source
+        parents_seen: set[int] = set()
+        common = never
         frame = source_id
+        depth = 0
+        while frame != 0:
+            cache = caches[frame]
+            if cache is None:
+                break
+            stamp, parent = cache.latest()
+            if parent == 0:
+                break
+            if stamp and stamp < common:
+                common = stamp
+            source_links.append((stamp, parent))
+            parents_seen.add(parent)
+            frame = parent
+            if frame == target_id:
+                return 0 if common == never else common
+            depth += 1
+            if depth > MAX_GRAPH_DEPTH:
+                raise self._loop()
+        common = never
+        common_parent = 0
+        frame = target_id
         depth = 0
         while True:
             cache = caches[frame]
@@ -325,93 +416,106 @@ class BufferCore:
                 break
             if stamp and stamp < common:
                 common = stamp
-            chain[parent] = common
-            frame = parent
-            if frame == target_id:
-                return 0 if common == big else common
-            depth += 1
-            if depth > MAX_GRAPH_DEPTH:
-                self._raise_loop(source_id)
-        common_t = big
-        frame = target_id
-        depth = 0
-        while True:
-            cache = caches[frame]
-            if cache is None:
+            if parent in parents_seen:
+                common_parent = parent
                 break
-            stamp, parent = cache.latest()
-            if parent == 0:
-                break
-            if stamp and stamp < common_t:
-                common_t = stamp
-            if parent in chain:
-                best = min(common_t, chain[parent])
-                return 0 if best == big else best
             frame = parent
             if frame == source_id:
-                return 0 if common_t == big else common_t
+                return 0 if common == never else common
             depth += 1
             if depth > MAX_GRAPH_DEPTH:
-                self._raise_loop(target_id)
-        raise self._connectivity(target_id, source_id)
+                raise self._loop()
+        if common_parent == 0:
+            raise self._connectivity(target_id, source_id)
+        for stamp, parent in source_links:
+            if stamp and stamp < common:
+                common = stamp
+            if parent == common_parent:
+                break
+        return 0 if common == never else common
 
     def _connectivity(self, target_id: int, source_id: int) -> ConnectivityException:
         target, source = self._names[target_id], self._names[source_id]
         return ConnectivityException(
             f"Could not find a connection between '{target}' and '{source}' because they "
-            "are not part of the same tree. Tf has two or more unconnected trees."
+            "are not part of the same tree.Tf has two or more unconnected trees."
         )
 
-    def _raise_loop(self, frame_id: int) -> None:
-        raise LookupException(
-            "The tf tree is invalid because it contains a loop (walking up from frame "
-            f"'{self._names[frame_id]}'); {self.all_frames_as_string().strip()}"
+    def _loop(self) -> LookupException:
+        return LookupException(
+            f"The tf tree is invalid because it contains a loop.\n{self.all_frames_as_string()}\n"
         )
 
-    def _resolve(self, target_id: int, source_id: int, t: int) -> tuple[float, ...]:
+    def _extrapolation(
+        self, why: str, target_id: int, source_id: int, where: int
+    ) -> ExtrapolationException:
+        names = self._names
+        # tf2 formats this into a char[1000]: longer texts are cut to 999 characters
+        text = (
+            f"{why}, when looking up transform from frame [{names[source_id]}] "
+            f"to frame [{names[target_id]}]"
+        )[:999]
+        cache = self._caches[where]
+        if cache is not None and len(cache) == 0:
+            detail = f"(frame '{names[where]}' has no data: its cache is empty since a clear())"
+        else:
+            parent = names[cache.latest()[1]] if cache is not None else "?"
+            detail = f"(no data for frame '{names[where]}' in '{parent}' at that time)"
+        return ExtrapolationException(text, detail)
+
+    def _walk(self, target_id: int, source_id: int, t: int) -> tuple[float, ...]:
         """``T_target_source`` at ``t`` ns (0: each link's newest) as a 7-tuple.
 
-        Walks up from the source recording ``T_frame_source`` for every frame passed,
-        then up from the target until it meets that chain, as tf2's walkToTopParent.
+        Raises:
+            ExtrapolationException, ConnectivityException, LookupException (a loop).
         """
-        visited: dict[int, tuple[float, ...]] = {source_id: _IDENTITY}
-        end, acc, error = self._climb(source_id, t, target_id, visited)
-        if end == target_id:
-            return acc
-        end_t, acc_t, error_t = self._climb(target_id, t, -1, visited)
-        if end_t in visited:
-            return compose(inverse(acc_t), visited[end_t])
-        error = error or error_t
-        if error is not None:
-            exc, where = error
-            cache = self._caches[where]
-            parent_name = self._names[cache.latest()[1]] if cache is not None else "?"
-            raise ExtrapolationException(
-                f"{exc}, when looking up transform from frame [{self._names[source_id]}] to "
-                f"frame [{self._names[target_id]}] (no data for frame '{self._names[where]}' "
-                f"in '{parent_name}' at that time)"
-            )
+        if target_id == source_id:
+            return _IDENTITY
+        # T_frame_source for every frame the source walk reached (its last one included)
+        below: dict[int, tuple[float, ...]] = {}
+        top, from_source, why = self._climb(source_id, t, target_id, below)
+        if top == target_id:
+            return from_source
+        # tf2's target walk goes on to ``top``; it stops here at the first frame of the
+        # source walk instead: the links from there to ``top`` all had data (the source
+        # walk used them), so the outcome is the same, with fewer products.
+        end, from_target, why_target = self._climb(target_id, t, -1, below)
+        if why_target is not None:
+            raise self._extrapolation(why_target, target_id, source_id, end)
+        if end in below:
+            return compose(inverse(from_target), below[end])
+        if why is not None:
+            raise self._extrapolation(why, target_id, source_id, top)
         raise self._connectivity(target_id, source_id)
 
     def _climb(
-        self, frame: int, t: int, goal: int, visited: dict[int, tuple[float, ...]]
-    ) -> tuple[int, tuple[float, ...], tuple[NoData, int] | None]:
-        """Walk up from ``frame`` accumulating ``T_current_start``.
+        self, frame: int, t: int, goal: int, below: dict[int, tuple[float, ...]]
+    ) -> tuple[int, tuple[float, ...], str | None]:
+        """Walk up from ``frame`` composing ``T_current_start``, link by link at ``t``.
 
-        With ``goal >= 0`` (the source walk) every frame passed is recorded in
-        ``visited`` and the walk stops at ``goal``; with ``goal < 0`` (the target
-        walk) it stops at the first frame in ``visited``. Also stops at a root or at
-        a link without data at ``t``. Returns ``(frame reached, accumulated, error)``.
+        With ``goal >= 0`` (the source walk) it stops on reaching ``goal`` and records
+        ``T_current_start`` in ``below`` for every other frame it reaches; with
+        ``goal < 0`` (the target walk) it stops on reaching a frame in ``below``
+        (before using that frame's link). Either walk also stops at a frame without a
+        parent (a root) or one whose link has no data at ``t``. Returns ``(frame
+        reached, accumulated transform, why)``, ``why`` being tf2's text for the
+        missing data or ``None``.
+
+        Raises:
+            LookupException: more than MAX_GRAPH_DEPTH links: the tree has a loop.
         """
         # Any: the loop tells TimeCache from StaticCache by ``cache.static``, not isinstance.
         caches: list[Any] = self._caches
-        record = goal >= 0
         tx = ty = tz = qx = qy = qz = 0.0
         qw = 1.0
         depth = 0
-        start = frame
+        record = goal >= 0
         while True:
-            if not record and frame in visited:
+            if record:
+                if frame == goal:
+                    return frame, (tx, ty, tz, qx, qy, qz, qw), None
+                below[frame] = (tx, ty, tz, qx, qy, qz, qw)
+            elif frame in below:
                 return frame, (tx, ty, tz, qx, qy, qz, qw), None
             cache = caches[frame]
             if cache is None:
@@ -420,7 +524,7 @@ class BufferCore:
             if cache.static:
                 entry = cache.entry
                 if entry is None:
-                    return frame, (tx, ty, tz, qx, qy, qz, qw), (NoData(cache_empty()), frame)
+                    return frame, (tx, ty, tz, qx, qy, qz, qw), ""
                 parent, ex, ey, ez, x1, y1, z1, w1 = entry
             else:
                 stamps = cache.stamps
@@ -461,15 +565,11 @@ class BufferCore:
                             else:
                                 x1, y1, z1, w1 = ax1, ay1, az1, aw1
                     else:
-                        return (
-                            frame,
-                            (tx, ty, tz, qx, qy, qz, qw),
-                            (NoData(cache._explain(t)), frame),
-                        )
+                        return frame, (tx, ty, tz, qx, qy, qz, qw), cache._explain(t)
                 elif n > lo:
                     parent, ex, ey, ez, x1, y1, z1, w1 = cache.data[-1]
                 else:
-                    return frame, (tx, ty, tz, qx, qy, qz, qw), (NoData(cache_empty()), frame)
+                    return frame, (tx, ty, tz, qx, qy, qz, qw), ""
             # --- acc = link * acc ---
             cx = 2.0 * (y1 * tz - z1 * ty)
             cy = 2.0 * (z1 * tx - x1 * tz)
@@ -486,20 +586,14 @@ class BufferCore:
                 w1 * qw - x1 * qx - y1 * qy - z1 * qz,
             )
             frame = parent
-            if record:
-                if frame == goal:
-                    return frame, (tx, ty, tz, qx, qy, qz, qw), None
-                if frame in visited:
-                    self._raise_loop(start)
-                visited[frame] = (tx, ty, tz, qx, qy, qz, qw)
-            else:
-                depth += 1
-                if depth > MAX_GRAPH_DEPTH:
-                    self._raise_loop(start)
+            depth += 1
+            if depth > MAX_GRAPH_DEPTH:
+                raise self._loop()
 
     def lookup_ns(self, target: str, source: str, t: int) -> tuple[int, tuple[float, ...]]:
         """``(stamp_ns, (tx, ty, tz, qx, qy, qz, qw))`` of ``T_target_source`` at ``t`` ns."""
         if target == source:
+            # tf2 answers the identity for any name, even unknown, empty or with a '/'
             if t == 0:
                 fid = self._ids.get(target)
                 cache = self._caches[fid] if fid is not None else None
@@ -509,22 +603,19 @@ class BufferCore:
         source_id = self._validate("lookupTransform argument source_frame", source)
         if t == 0:
             t = self.latest_common_time_ns(target_id, source_id)
-            if t == 0:
-                return 0, self._resolve_latest(target_id, source_id)
-        return t, self._resolve(target_id, source_id, t)
-
-    def _resolve_latest(self, target_id: int, source_id: int) -> tuple[float, ...]:
-        # Every link on the path is static: any time gives the same answer.
-        return self._resolve(target_id, source_id, 0)
+        return t, self._walk(target_id, source_id, t)
 
     def lookup(self, target: str, source: str, time: Any = 0) -> StampedTransform:
         """The pose of ``source`` in ``target`` at ``time`` (0 or None: the latest common time).
 
+        tf2's ``lookupTransform``: ``target == source`` is the identity (for any name);
+        otherwise both frames are validated, target first.
+
         Raises:
+            InvalidArgumentException: empty frame id or one starting with ``/``.
             LookupException: a frame is unknown (or the tree has a loop).
             ConnectivityException: the frames are in different trees.
             ExtrapolationException: some link on the path has no data at ``time``.
-            InvalidArgumentException: empty frame id or one starting with ``/``.
         """
         t = to_ns(time)
         ids = self._ids
@@ -532,7 +623,7 @@ class BufferCore:
         source_id = ids.get(source)
         if t and target_id is not None and source_id is not None and target_id != source_id:
             # fast path: known, distinct frames at a given time
-            tx, ty, tz, qx, qy, qz, qw = self._resolve(target_id, source_id, t)
+            tx, ty, tz, qx, qy, qz, qw = self._walk(target_id, source_id, t)
             return StampedTransform(target, source, t, (tx, ty, tz), (qx, qy, qz, qw))
         stamp, v = self.lookup_ns(target, source, t)
         return StampedTransform(target, source, stamp, (v[0], v[1], v[2]), (v[3], v[4], v[5], v[6]))
@@ -549,39 +640,150 @@ class BufferCore:
 
         Goes through ``fixed_frame``, a frame assumed not to move between the two
         times (``world``, ``map``, ``odom``): ``T_target(tt)_source(ts) =
-        T_target_fixed(tt) * T_fixed_source(ts)``. The result is stamped ``target_time``.
+        T_target_fixed(tt) * T_fixed_source(ts)``. The result is stamped as the
+        target -> fixed lookup (``target_time``, or the latest common time for 0).
+
+        As tf2: the three frames are validated first (target, source, fixed), then
+        ``source`` is looked up in ``fixed`` at ``source_time``, then ``fixed`` in
+        ``target`` at ``target_time``; the first failure is raised.
         """
-        self._validate("lookupTransform argument fixed_frame", fixed_frame)
         t_ns = to_ns(target_time, what="target_time")
         s_ns = to_ns(source_time, what="source_time")
-        stamp1, a = self.lookup_ns(target, fixed_frame, t_ns)
+        self._validate("lookupTransform argument target_frame", target)
+        self._validate("lookupTransform argument source_frame", source)
+        self._validate("lookupTransform argument fixed_frame", fixed_frame)
         _, b = self.lookup_ns(fixed_frame, source, s_ns)
-        v = compose(a, b)
-        return StampedTransform(
-            target, source, stamp1, (v[0], v[1], v[2]), (v[3], v[4], v[5], v[6])
-        )
+        stamp, a = self.lookup_ns(target, fixed_frame, t_ns)
+        v = _matrix_sign(compose(a, b))
+        return StampedTransform(target, source, stamp, (v[0], v[1], v[2]), (v[3], v[4], v[5], v[6]))
+
+    def _can_walk(self, target_id: int, source_id: int, t: int) -> tuple[bool, str]:
+        if target_id == source_id:
+            return True, ""
+        try:
+            self._walk(target_id, source_id, t or self.latest_common_time_ns(target_id, source_id))
+        except (LookupException, ConnectivityException, ExtrapolationException) as exc:
+            return False, exc.tf2_message
+        return True, ""
+
+    def _refused_by_can(self, function: str, frame: str) -> bool:
+        """tf2's canTransform refuses empty and ``/``-prefixed ids with a logged warning only."""
+        if frame != "" and not frame.startswith("/"):
+            return False
+        try:
+            self._validate(function, frame)
+        except InvalidArgumentException as exc:
+            _LOG.warning("%s", exc.tf2_message)
+        return True
 
     def can_lookup(self, target: str, source: str, time: Any = 0) -> tuple[bool, str]:
-        """``(possible, reason)`` for a lookup; never raises for frames or times."""
+        """``(possible, why not)`` for :meth:`lookup`; never raises for frames or times.
+
+        ``why not`` is the first line of the exception :meth:`lookup` would raise:
+        tf2's text, as tf's ``tf_echo`` prints it. (:meth:`can_transform_core` gives
+        tf2's ``canTransform`` string instead.)
+        """
         if target == source:
             return True, ""
         try:
             self.lookup_ns(target, source, to_ns(time))
-        except (LookupException, ConnectivityException, ExtrapolationException) as exc:
-            return False, str(exc)
-        except InvalidArgumentException as exc:
-            return False, str(exc)
+        except (
+            LookupException,
+            ConnectivityException,
+            ExtrapolationException,
+            InvalidArgumentException,
+        ) as exc:
+            return False, exc.tf2_message
         return True, ""
 
-    def get_latest_common_time(self, target: str, source: str) -> int:
-        """The latest common time of two frames, integer nanoseconds (0: all static)."""
+    def can_transform_core(self, target: str, source: str, time: Any = 0) -> tuple[bool, str]:
+        """``(possible, why not)`` for a lookup, as tf2's ``canTransform`` (tf2_py's name).
+
+        ``why not`` is tf2's error string: the text of the lookup's exception, except
+        that unknown frames read ``canTransform: target_frame X does not exist.`` and
+        that empty or ``/``-prefixed frames give ``""`` (their warning is logged).
+        Never raises for frames.
+        """
         if target == source:
-            fid = self._ids.get(target)
-            cache = self._caches[fid] if fid is not None else None
-            return cache.latest()[0] if cache is not None else 0
-        target_id = self._validate("getLatestCommonTime argument target_frame", target)
-        source_id = self._validate("getLatestCommonTime argument source_frame", source)
-        return self.latest_common_time_ns(target_id, source_id)
+            return True, ""
+        try:
+            t = to_ns(time)
+        except InvalidArgumentException as exc:
+            return False, str(exc)
+        if self._refused_by_can("canTransform argument target_frame", target):
+            return False, ""
+        if self._refused_by_can("canTransform argument source_frame", source):
+            return False, ""
+        target_id = self._ids.get(target)
+        source_id = self._ids.get(source)
+        if target_id is None or source_id is None:
+            missing = []
+            if target_id is None:
+                missing.append(f"canTransform: target_frame {target} does not exist.")
+            if source_id is None:
+                missing.append(f"canTransform: source_frame {source} does not exist.")
+            return False, " ".join(missing)
+        return self._can_walk(target_id, source_id, t)
+
+    def can_transform_full_core(
+        self,
+        target: str,
+        target_time: Any,
+        source: str,
+        source_time: Any,
+        fixed_frame: str,
+    ) -> tuple[bool, str]:
+        """``(possible, why not)`` for :meth:`lookup_full`, as tf2's ``canTransform`` (fixed frame).
+
+        Checks target -> fixed at ``target_time``, then fixed -> source at
+        ``source_time``. Unknown frames are reported as tf2 (Noetic's last release)
+        words it, ``fixed_frame: F`` + ``does not exist.`` included.
+        """
+        try:
+            t_ns = to_ns(target_time, what="target_time")
+            s_ns = to_ns(source_time, what="source_time")
+        except InvalidArgumentException as exc:
+            return False, str(exc)
+        if (
+            self._refused_by_can("canTransform argument target_frame", target)
+            or self._refused_by_can("canTransform argument source_frame", source)
+            or self._refused_by_can("canTransform argument fixed_frame", fixed_frame)
+        ):
+            return False, ""
+        ids = self._ids
+        target_id, source_id, fixed_id = ids.get(target), ids.get(source), ids.get(fixed_frame)
+        if target_id is None or source_id is None or fixed_id is None:
+            missing = []
+            if target_id is None:
+                missing.append(f"canTransform: target_frame {target} does not exist.")
+            if source_id is None:
+                missing.append(f"canTransform: source_frame {source} does not exist.")
+            if fixed_id is None:
+                missing.append(f"fixed_frame: {fixed_frame}does not exist.")
+            return False, " ".join(missing)
+        ok, why = self._can_walk(target_id, fixed_id, t_ns)
+        if not ok:
+            return ok, why
+        return self._can_walk(fixed_id, source_id, s_ns)
+
+    def get_latest_common_time(self, target: str, source: str) -> int:
+        """The latest common time of two frames, integer nanoseconds (0: all static).
+
+        As tf2_py's ``get_latest_common_time``: both frames must exist (a frame asked
+        against itself too); its newest stamp when ``target == source``.
+
+        Raises:
+            InvalidArgumentException: an empty frame id or one starting with ``/``.
+            LookupException: a frame is unknown.
+            TransformException: the frames are in different trees, or the tree has a
+                loop (tf2 raises this base class here, not ConnectivityException).
+        """
+        target_id = self._validate("get_latest_common_time", target)
+        source_id = self._validate("get_latest_common_time", source)
+        try:
+            return self.latest_common_time_ns(target_id, source_id)
+        except (ConnectivityException, LookupException) as exc:
+            raise TransformException(exc.tf2_message, exc.detail) from None
 
     def get_parent(self, frame: str, time: Any = 0) -> str | None:
         """The parent of ``frame`` at ``time`` (0: latest), or ``None`` for a root."""
@@ -643,11 +845,14 @@ class BufferCore:
         return "\n".join(lines) + "\n"
 
     def all_frames_as_string(self) -> str:
-        """tf2's ``allFramesAsString``: ``Frame X exists with parent Y.`` per child frame."""
+        """tf2's ``allFramesAsString``: ``Frame X exists with parent Y.`` per child frame.
+
+        A frame whose data was cleared reads ``exists with parent NO_PARENT.``, as in tf2.
+        """
         lines = []
         for fid in range(1, len(self._names)):
             cache = self._caches[fid]
-            if cache is None or len(cache) == 0:
+            if cache is None:
                 continue
             lines.append(
                 f"Frame {self._names[fid]} exists with parent {self._names[cache.latest()[1]]}."

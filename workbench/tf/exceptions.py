@@ -1,5 +1,8 @@
 """tf2's exceptions, with the same names and meanings, rooted at :class:`TransformError`.
 
+The first line of a message is tf2's own text for the same failure; workbench may add
+a second line with more detail (the known frames, the link without data).
+
 * :class:`LookupException`: a frame does not exist (or the tree has a loop).
 * :class:`ConnectivityException`: both frames exist but are in different trees.
 * :class:`ExtrapolationException`: the path exists but not at the requested time
@@ -15,11 +18,27 @@ emits a :class:`TransformDataWarning`.
 
 from __future__ import annotations
 
+from typing import Any
+
 from workbench.errors import TransformError
 
 
 class TransformException(TransformError):
-    """Base of tf2's exceptions (``tf2.TransformException``)."""
+    """Base of tf2's exceptions (``tf2.TransformException``).
+
+    Args:
+        message: tf2's text for the failure.
+        detail: More detail from workbench, shown on a line of its own after ``message``.
+
+    Attributes:
+        tf2_message: ``message`` alone: the text tf2 gives (``can_transform`` reports it).
+        detail: The added detail, ``""`` if none.
+    """
+
+    def __init__(self, message: str, detail: str = "", **kwargs: Any) -> None:
+        self.tf2_message = message
+        self.detail = detail
+        super().__init__(f"{message}\n{detail}" if detail else message, **kwargs)
 
 
 class LookupException(TransformException):
