@@ -36,7 +36,7 @@ from typing import Any
 
 import numpy as np
 import pytest
-from conftest import skip_or_fail
+from skipping import skip_or_fail
 
 from workbench.msgs import Time
 from workbench.tf import Buffer, TransformDataWarning
