@@ -15,7 +15,7 @@ from workbench.bus import Bus, Node
 from workbench.errors import SimulationError
 from workbench.paths import examples_dir
 from workbench.sim import World
-from workbench.sim.plugins import load_plugin_class
+from workbench.sim.plugins import UnavailablePluginError, load_plugin_class
 from workbench.sim.server import SERVER_PHYSICS, SimServer
 
 PLUGINS = examples_dir() / "gazebo" / "plugins"
@@ -158,8 +158,8 @@ def test_plugin_files_that_are_missing_empty_or_fail_to_load_are_refused(tmp_pat
     syntax = _write(tmp_path, "syntax.py", "def broken(:\n")
     with pytest.raises(SimulationError, match=r"syntax.py:1: SyntaxError"):
         load_plugin_class(plugin_spec(syntax, "syntax"))
-    with pytest.raises(SimulationError, match="not a Python plugin"):
-        load_plugin_class(plugin_spec("libgazebo_ros_diff_drive.so", "diff"))
+    with pytest.raises(UnavailablePluginError, match="'libgazebo_no_such.so'.*not available"):
+        load_plugin_class(plugin_spec("libgazebo_no_such.so", "nothing"))
     raising = _write(
         tmp_path,
         "raising.py",
@@ -197,3 +197,16 @@ def test_a_simulation_that_blows_up_pauses_with_a_message_and_the_server_lives_o
     server.paused = False
     server.run(until=0.1)
     assert np.all(np.isfinite(server.world.get_model_pose("calm").translation()))
+
+
+def test_an_unknown_gazebo_library_is_one_warning_and_the_model_still_spawns(caplog):
+    """Gazebo logs a plugin library it cannot load and spawns the model (issue 15)."""
+    server = _server()
+    unknown = plugin_spec("libgazebo_ros_fancy.so", "fancy")
+    with caplog.at_level(logging.WARNING, logger="workbench.sim"):
+        server.spawn(box_model("crate", plugins=[unknown]), [0.0, 0.0, 0.5])
+    assert "crate" in server.world.model_names()
+    warnings = [r.getMessage() for r in caplog.records if r.levelno == logging.WARNING]
+    assert len(warnings) == 1, warnings
+    assert "model 'crate'" in warnings[0] and "libgazebo_ros_fancy.so" in warnings[0]
+    assert server.plugins == []

@@ -94,7 +94,7 @@ def sim_model_from_element(
         for sensor in link.findall("sensor"):
             for plugin in sensor.iter("plugin"):
                 model.plugins.append(
-                    plugin_spec(plugin, "sensor", link.get("name"), base_dir, source)
+                    plugin_spec(plugin, "sensor", link.get("name"), base_dir, source, sensor=sensor)
                 )
             model.sensors.append((link.get("name", ""), element_text(sensor)))
             link.remove(sensor)

@@ -151,7 +151,9 @@ def _apply_block(
             model.plugins.append(plugin_spec(element, "model", reference, base_dir, where))
         elif tag == "sensor":
             for plugin in element.iter("plugin"):
-                model.plugins.append(plugin_spec(plugin, "sensor", reference, base_dir, where))
+                model.plugins.append(
+                    plugin_spec(plugin, "sensor", reference, base_dir, where, sensor=element)
+                )
             model.sensors.append((reference or model.root_link or "", element_text(element)))
     contact = {e.tag: _number(e, line) for e in block if e.tag in ("mu1", "mu2", "kp", "kd")}
     if contact and reference:

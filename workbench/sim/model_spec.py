@@ -31,6 +31,7 @@ class PluginSpec:
         base_dir: Folder of the file the plugin was declared in; a relative Python
             file name is looked up there first.
         source: File (and line) for messages, e.g. ``"worlds/demo.world:12"``.
+        sensor: For a sensor plugin, the enclosing ``<sensor>`` element as XML text.
     """
 
     name: str
@@ -40,6 +41,7 @@ class PluginSpec:
     reference: str | None = None
     base_dir: Path | None = None
     source: str = ""
+    sensor: str = ""
 
 
 @dataclass
@@ -97,9 +99,15 @@ def element_text(element: Any) -> str:
 
 
 def plugin_spec(
-    element: Any, kind: str, reference: str | None, base_dir: Path | None, source: str
+    element: Any,
+    kind: str,
+    reference: str | None,
+    base_dir: Path | None,
+    source: str,
+    sensor: Any = None,
 ) -> PluginSpec:
-    """The :class:`PluginSpec` of a ``<plugin>`` element read from ``source``."""
+    """The :class:`PluginSpec` of a ``<plugin>`` element read from ``source`` (``sensor``:
+    the enclosing ``<sensor>`` element of a sensor plugin)."""
     return PluginSpec(
         name=element.get("name", ""),
         filename=element.get("filename", ""),
@@ -108,4 +116,5 @@ def plugin_spec(
         reference=reference,
         base_dir=base_dir,
         source=f"{source}:{element.sourceline}" if element.sourceline else source,
+        sensor=element_text(sensor) if sensor is not None else "",
     )

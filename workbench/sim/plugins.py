@@ -49,6 +49,14 @@ if TYPE_CHECKING:
 
 _LOG = logging.getLogger("workbench.sim.plugins")
 
+#: Gazebo's ROS plugins that workbench provides, by their library name: ``module:Class``.
+#: A ``<plugin filename="libgazebo_ros_diff_drive.so">`` in a model loads the class here.
+BUILTIN_PLUGINS: dict[str, str] = {}
+
+
+class UnavailablePluginError(SimulationError):
+    """A Gazebo plugin library workbench does not provide: the model runs without it."""
+
 
 @dataclass(frozen=True)
 class UpdateInfo:
@@ -61,8 +69,10 @@ class UpdateInfo:
 class SdfElement:
     """The ``<plugin>`` element's parameters, read like Gazebo's ``sdf::Element``."""
 
-    def __init__(self, xml: str) -> None:
+    def __init__(self, xml: str, sensor: str = "") -> None:
         self.element = etree.fromstring(xml.encode()) if xml.strip() else etree.Element("plugin")
+        #: The enclosing ``<sensor>`` element of a sensor plugin (lxml), else None.
+        self.sensor = etree.fromstring(sensor.encode()) if sensor.strip() else None
 
     @property
     def name(self) -> str:
@@ -153,6 +163,16 @@ def load_plugin_class(spec: PluginSpec) -> type[Plugin]:
     """
     filename, _, class_name = spec.filename.partition(":")
     where = f" (declared in {spec.source})" if spec.source else ""
+    builtin = BUILTIN_PLUGINS.get(Path(spec.filename).name)
+    if builtin is not None:
+        module_name, _, class_name = builtin.partition(":")
+        return _plugin_class(importlib.import_module(module_name), class_name, spec, builtin)
+    if filename.startswith("lib") and filename.endswith(".so"):
+        provided = ", ".join(sorted(BUILTIN_PLUGINS)) or "none"
+        raise UnavailablePluginError(
+            f"Gazebo plugin '{filename}' ('{spec.name}'{where}) is not available in workbench",
+            hint=f"it is skipped; workbench provides {provided}, and Python plugins",
+        )
     if filename.endswith(".py"):
         path = _find_file(filename, spec.base_dir)
         if path is None:

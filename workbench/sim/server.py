@@ -35,6 +35,7 @@ from workbench.sim.model_spec import PluginSpec, SimModel
 from workbench.sim.plugins import (
     Plugin,
     SdfElement,
+    UnavailablePluginError,
     UpdateInfo,
     WorldPlugin,
     describe_failure,
@@ -304,8 +305,6 @@ class SimServer:
                 _LOG.warning("%s", warning)
             self._after_rebuild()
             for spec in model.plugins:
-                if spec.kind == "sensor" and spec.filename.startswith("lib"):
-                    continue  # sensors come with the next simulator release
                 self.load_plugin(spec, model.name)
 
         self.call(work)
@@ -351,11 +350,15 @@ class SimServer:
         """Load and start a plugin; failures are logged (file and line) and the plugin skipped."""
         try:
             cls = load_plugin_class(spec)
+        except UnavailablePluginError as error:
+            owner = f"model '{model}': " if model else ""
+            _LOG.warning("%s%s", owner, error.one_line())
+            return None
         except SimulationError as error:
             _LOG.error("%s", error)
             return None
         plugin = cls()
-        sdf = SdfElement(spec.element)
+        sdf = SdfElement(spec.element, spec.sensor)
         rate = sdf.get("update_rate", float(getattr(plugin, "update_rate", 0.0) or 0.0))
         period = 1.0 / rate if rate and rate > 0 else 0.0
         slot = _PluginSlot(plugin, spec, model, period, next_update=self.world.time)
