@@ -73,12 +73,13 @@ _latched_ids = itertools.count(1)
 class _Latched:
     """The last message of a latched publisher, numbered (what its queryable answers)."""
 
-    __slots__ = ("origin", "seq", "data", "lock")
+    __slots__ = ("origin", "seq", "msg", "data", "lock")
 
     def __init__(self, origin: str) -> None:
         self.origin = origin  # unique to this publisher instance, across processes
-        self.seq = 0
-        self.data: bytes | None = None
+        self.seq = 0  # number of the last message sent
+        self.msg: Any = None  # the last message sent, and its bytes
+        self.data = b""
         self.lock = threading.Lock()
 
     def attachment(self, seq: int) -> str:
@@ -472,15 +473,19 @@ class ZenohTransport:
             data = serialize(msg)
             with latched.lock:
                 latched.seq += 1
-                latched.data = data
+                latched.msg, latched.data = msg, data
                 put(data, attachment=latched.attachment(latched.seq))
             mark(topic)
 
         def answer(query: Any) -> None:
+            last = pub.last_message
+            if last is None:
+                return
             with latched.lock:
-                data, seq = latched.data, latched.seq
-            if data is not None:
-                query.reply(latch_key, data, attachment=latched.attachment(seq))
+                sent, data, seq = latched.msg, latched.data, latched.seq
+            if last is not sent:  # being published: it gets the next number
+                data, seq = serialize(last), seq + 1
+            query.reply(latch_key, data, attachment=latched.attachment(seq))
 
         declared.append(
             self.session.declare_queryable(
