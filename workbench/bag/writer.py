@@ -222,6 +222,7 @@ class BagWriter:
         self.chunk_seconds = chunk_seconds
         self.counts: dict[str, int] = {}
         self._file: BinaryIO | None = None
+        self._closed = False
         self._connections: dict[tuple[str, str, str | None, bool], _Connection] = {}
         self._chunks: list[_ChunkInfo] = []
         self._data_end = 0  # where the next chunk goes (the index follows the last chunk)
@@ -285,6 +286,7 @@ class BagWriter:
             ) from None
         finally:
             self._file = None
+            self._closed = True
             if not handle.closed:
                 handle.close()
         return self.path
@@ -323,6 +325,8 @@ class BagWriter:
         if conn is not None:
             return conn.id
         if self._file is None:
+            if self._closed:
+                raise BagWriteError("cannot write: the bag is closed", path=self.path)
             self.open()
         if md5sum is None or definition is None:
             from workbench.bag.types import type_info
@@ -379,6 +383,10 @@ class BagWriter:
             from workbench.msgs import serialize
 
             data = serialize(msg)
+        if self._file is None:
+            if self._closed:
+                raise BagWriteError("cannot write: the bag is closed", path=self.path)
+            self.open()
         key = (topic, typename.replace("/msg/", "/", 1), callerid or None, bool(latching))
         conn = self._connections.get(key)
         if conn is None:
