@@ -50,12 +50,20 @@ class RawMessage:
         recv_ns: Receive time on the bus clock (wall or simulated), integer nanoseconds.
         callerid: The publishing node's name (ROS's connection header ``callerid``).
         topic: The topic it was published on.
+        latching: Whether the publisher latches (ROS's connection header ``latching``).
     """
 
-    __slots__ = ("data", "type", "md5", "recv_ns", "callerid", "topic")
+    __slots__ = ("data", "type", "md5", "recv_ns", "callerid", "topic", "latching")
 
     def __init__(
-        self, data: bytes, type: str, md5: str, recv_ns: int, callerid: str, topic: str
+        self,
+        data: bytes,
+        type: str,
+        md5: str,
+        recv_ns: int,
+        callerid: str,
+        topic: str,
+        latching: bool = False,
     ) -> None:
         self.data = data
         self.type = type
@@ -63,6 +71,7 @@ class RawMessage:
         self.recv_ns = recv_ns
         self.callerid = callerid
         self.topic = topic
+        self.latching = latching
 
     def deserialize(self) -> Message:
         """Decode into a message object (needs the type to be known here)."""
@@ -163,7 +172,13 @@ class Publisher:
         from workbench.msgs import serialize
 
         return RawMessage(
-            serialize(msg), self.type, self.md5, self._clock.now_ns(), self.node.name, self.topic
+            serialize(msg),
+            self.type,
+            self.md5,
+            self._clock.now_ns(),
+            self.node.name,
+            self.topic,
+            self.latch,
         )
 
     def _coerce(self, args: tuple, kwargs: dict) -> Message:
