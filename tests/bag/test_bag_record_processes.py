@@ -15,22 +15,19 @@ those checks skip (fail under WORKBENCH_REQUIRE_ALL=1) without it.
 from __future__ import annotations
 
 import json
-import os
 import signal
-import socket
 import subprocess
-import sys
 import time
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from skipping import skip_or_fail
+from process_helpers import Processes, private_core
+from skipping import ros_python
 
 from workbench.bag import read_messages, summarize
 
 pytestmark = pytest.mark.multiprocess
-ROS_PYTHON = "/usr/bin/python3"
 
 LATCHED_PUBLISHER = """
 from workbench.compat import rospy
@@ -66,112 +63,15 @@ while not rospy.is_shutdown():
 """
 
 
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return sock.getsockname()[1]
-
-
-def _wait_port(port: int, timeout: float = 20.0) -> bool:
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        try:
-            with socket.create_connection(("127.0.0.1", port), timeout=0.2):
-                return True
-        except OSError:
-            time.sleep(0.05)
-    return False
-
-
-class Processes:
-    """Child processes on the test's core (output in files), all stopped at the end."""
-
-    def __init__(self, uri: str, tmp: Path) -> None:
-        self.uri = uri
-        self.tmp = tmp
-        self.children: list[tuple[subprocess.Popen, Path]] = []
-
-    def env(self) -> dict[str, str]:
-        env = dict(os.environ, WORKBENCH_MASTER_URI=self.uri, PYTHONUNBUFFERED="1")
-        env.pop("WORKBENCH_DEBUG", None)
-        return env
-
-    def start(self, *argv: str, name: str) -> subprocess.Popen:
-        log = self.tmp / f"{name}.log"
-        with open(log, "wb") as stream:
-            popen = subprocess.Popen(
-                [sys.executable, *argv],
-                env=self.env(),
-                stdout=stream,
-                stderr=subprocess.STDOUT,
-                cwd=self.tmp,
-            )
-        self.children.append((popen, log))
-        return popen
-
-    def output(self, popen: subprocess.Popen) -> str:
-        return next(log for child, log in self.children if child is popen).read_text(
-            errors="replace"
-        )
-
-    def wait_output(self, popen: subprocess.Popen, text: str, timeout: float = 30.0) -> None:
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
-            if text in self.output(popen):
-                return
-            if popen.poll() is not None:
-                break
-            time.sleep(0.05)
-        raise AssertionError(f"'{text}' not seen; output was:\n{self.output(popen)[-2000:]}")
-
-    def stop_all(self) -> None:
-        for popen, _ in self.children:
-            if popen.poll() is None:
-                popen.send_signal(signal.SIGINT)
-        for popen, _ in self.children:
-            try:
-                popen.wait(10)
-            except subprocess.TimeoutExpired:
-                popen.kill()
-                popen.wait()
-
-
 @pytest.fixture
 def procs(tmp_path: Path) -> Iterator[Processes]:
     """A private ``workbench core`` on a free loopback port, and children joined to it."""
-    port = _free_port()
-    uri = f"tcp/127.0.0.1:{port}"
-    with open(tmp_path / "core.log", "wb") as log:
-        core = subprocess.Popen(
-            [sys.executable, "-m", "workbench", "core"],
-            env=dict(os.environ, WORKBENCH_MASTER_URI=uri),
-            stdout=log,
-            stderr=subprocess.STDOUT,
-        )
-    processes = Processes(uri, tmp_path)
-    try:
-        assert _wait_port(port), (tmp_path / "core.log").read_text()
-        yield processes
-    finally:
-        processes.stop_all()
-        core.send_signal(signal.SIGINT)
+    with private_core(tmp_path) as uri:
+        processes = Processes(uri, tmp_path)
         try:
-            core.wait(10)
-        except subprocess.TimeoutExpired:
-            core.kill()
-            core.wait()
-
-
-def _ros_python() -> str:
-    try:
-        done = subprocess.run([ROS_PYTHON, "-c", "import rosbag"], capture_output=True, timeout=60)
-    except (OSError, subprocess.TimeoutExpired):
-        done = None
-    if done is None or done.returncode != 0:
-        # imported here: with tests/bus collected too, 'conftest' can be tests/bus/conftest.py
-
-        skip_or_fail("ROS 1's rosbag is not installed (apt-get install python3-rosbag)")
-    return ROS_PYTHON
+            yield processes
+        finally:
+            processes.stop_all()
 
 
 def _ros_reads(path: Path) -> dict:
@@ -187,7 +87,10 @@ def _ros_reads(path: Path) -> dict:
         "                  'count': bag.get_message_count(), 'info_topics': sorted(info.topics)}))\n"
     )
     done = subprocess.run(
-        [_ros_python(), "-c", script, str(path)], capture_output=True, text=True, timeout=120
+        [ros_python("rosbag", "python3-rosbag"), "-c", script, str(path)],
+        capture_output=True,
+        text=True,
+        timeout=120,
     )
     assert done.returncode == 0, done.stderr
     return json.loads(done.stdout)
@@ -243,7 +146,9 @@ def test_recorder_killed_outright_keeps_all_but_the_last_second(procs):
             "for _ in bag.reindex(): pass\n"
             "bag.close()\n"
         )
-        done = subprocess.run([_ros_python(), "-c", script, str(active)], capture_output=True)
+        done = subprocess.run(
+            [ros_python("rosbag", "python3-rosbag"), "-c", script, str(active)], capture_output=True
+        )
         assert done.returncode == 0, done.stderr
     seen = _ros_reads(active)
     assert seen["count"] == len(values)

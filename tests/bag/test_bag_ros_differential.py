@@ -12,25 +12,15 @@ import subprocess
 
 import numpy as np
 import pytest
-from skipping import skip_or_fail
+from skipping import ros_python as find_ros_python
 
 from workbench.bag import BagWriter, read_messages
 from workbench.msgs.geometry_msgs import Twist, Vector3
 
-ROS_PYTHON = "/usr/bin/python3"
-
 
 @pytest.fixture(scope="module")
 def ros_python() -> str:
-    try:
-        done = subprocess.run([ROS_PYTHON, "-c", "import rosbag"], capture_output=True, timeout=60)
-    except (OSError, subprocess.TimeoutExpired):
-        done = None
-    if done is None or done.returncode != 0:
-        # imported here: with tests/bus collected too, 'conftest' can be tests/bus/conftest.py
-
-        skip_or_fail("ROS 1's rosbag is not installed (apt-get install python3-rosbag)")
-    return ROS_PYTHON
+    return find_ros_python("rosbag", "python3-rosbag")
 
 
 def _values(seed: int, n: int = 500) -> list[float]:
