@@ -52,8 +52,9 @@ def check_plan(plan: BuildingPlan, *, crossings: bool = True) -> None:
 
 
 def _unique_names(plan: BuildingPlan) -> None:
-    seen: dict[str, str] = {plan.name: "the building"}
-    names = [("level", level.name) for level in plan.levels]
+    seen: dict[str, str] = {"ground_plane": "the ground"}
+    names = [("building", plan.name)]
+    names += [("level", level.name) for level in plan.levels]
     names += [("wall", wall.name) for wall in plan.walls]
     names += [("stairs", stairs.name) for stairs in plan.stairs]
     names += [("furniture", item.name) for item in plan.items]
@@ -62,6 +63,11 @@ def _unique_names(plan: BuildingPlan) -> None:
     for kind, name in names:
         if not name:
             raise plan.error(f"a {kind} has an empty name")
+        if "/" in name or "::" in name or name != name.strip():
+            raise plan.error(
+                f"the {kind} name '{name}' has '/', '::' or surrounding spaces",
+                hint="use letters, digits and _",
+            )
         if kind == "level":
             if name in levels:
                 raise plan.error(f"two levels are named '{name}'", hint="rename one")

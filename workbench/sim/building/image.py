@@ -87,10 +87,10 @@ def plan_from_image(
         raise PlanError(
             "the image's scale is unknown",
             path=file,
-            hint="give its resolution in m/pixel (--resolution 0.05)",
+            hint="give its resolution in m/pixel with --resolution, e.g. 0.05",
         )
-    _check_option(file, "resolution", resolution)
-    _check_option(file, "height", height)
+    _check_option(file, "resolution", resolution, "m per pixel")
+    _check_option(file, "height", height, "m")
     threshold = 0.65 if threshold is None else threshold
     if not 0 <= threshold < 1:
         raise PlanError(f"threshold must be in [0, 1), got {threshold:g}", path=file)
@@ -182,9 +182,9 @@ def _despeckle(walls: np.ndarray, min_pixels: int) -> np.ndarray:
     return np.asarray(keep[labels], dtype=bool)
 
 
-def _check_option(file: Path, what: str, value: float) -> None:
+def _check_option(file: Path, what: str, value: float, unit: str) -> None:
     if not (math.isfinite(value) and value > 0):
-        raise PlanError(f"{what} must be a positive number of metres, got {value:g}", path=file)
+        raise PlanError(f"{what} must be a positive number ({unit}), got {value:g}", path=file)
 
 
 def _rotate(

@@ -65,7 +65,8 @@ def save_building(
 ) -> list[Path]:
     """Write ``plan`` and return the files written.
 
-    ``kind`` None: a world. A model written to a folder (an existing one, or a
+    ``kind`` None: a world; a world written to an existing folder is
+    ``NAME.world`` there. A model written to a folder (an existing one, or a
     path without a suffix) becomes a Gazebo model folder, ``model.config`` and
     ``model.sdf``, for ``GAZEBO_MODEL_PATH`` and ``model://``; otherwise one file.
 
@@ -84,6 +85,8 @@ def save_building(
             f"  <description>{escape(plan.summary())}</description>\n</model>\n"
         )
         files = [(target / "model.config", config), (target / "model.sdf", text)]
+    elif target.is_dir():
+        files = [(target / f"{plan.name}.{'world' if kind == 'world' else 'sdf'}", text)]
     else:
         files = [(target, text)]
     for file, content in files:
