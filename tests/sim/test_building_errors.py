@@ -55,6 +55,11 @@ BAD_PLANS = [
         ),
         "window 'v' overlaps door 'd' (from 1 to 1.45 m along the wall)",
     ),
+    (
+        _walls("{name: l, points: [[0, 0], [2, 0], [2, 2]], doors: [{name: d, at: 0.2}]}"),
+        "level 'ground', wall 'l' (segment 0), door 'd' runs past the wall's end "
+        "(from -0.25 to 0.65 m along a 2 m wall)",
+    ),
     (_walls("{name: w, start: [0, 0], end: [3, 0], thicknes: 0.2}"), "unknown key 'thicknes'"),
     (_walls("{name: w, start: [0, 0]}"), "wall 'w' needs 'start' and 'end' (or 'points')"),
     (_walls("{name: w, start: [0, 0], end: [3, 'x']}"), "wall 'w': 'end' must be a point [x, y]"),

@@ -29,6 +29,12 @@ def test_each_shipped_world_is_its_plan_built_and_loads_by_name(repo_root, name,
     assert world.model_names()[0] == "ground_plane" and name in world.model_names()
 
 
+@pytest.mark.parametrize("name", sorted(shipped_worlds()))
+def test_every_shipped_world_loads_without_warnings(name, caplog):
+    world = world_from_file(name, caplog)
+    assert world.model_names()[0] == "ground_plane"
+
+
 def test_workbench_sim_serves_a_built_world_by_name():
     from workbench.sim.gzserver import ServerOptions, build_server
 

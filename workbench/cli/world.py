@@ -38,7 +38,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
     image.add_argument(
         "--resolution", type=float, metavar="M", help="metres per pixel (a map YAML has its own)"
     )
-    image.add_argument("--height", type=float, default=2.5, metavar="M", help="wall height")
+    image.add_argument("--height", type=float, metavar="M", help="wall height (default 2.5)")
     image.add_argument(
         "--threshold",
         type=float,
@@ -84,7 +84,7 @@ def build(
     model: bool = False,
     name: str | None = None,
     resolution: float | None = None,
-    height: float = 2.5,
+    height: float | None = None,
     threshold: float | None = None,
     negate: bool | None = None,
     origin: tuple[float, ...] | None = None,
@@ -104,8 +104,8 @@ def build(
         building = load_plan(source)
         if name:
             building.name = name
-        options = (resolution, threshold, negate, origin)
-        if any(v is not None for v in options) or min_pixels != 1 or height != 2.5:
+        options = (resolution, height, threshold, negate, origin)
+        if any(v is not None for v in options) or min_pixels != 1:
             raise PlanError(
                 "--resolution, --height, --threshold, --negate, --origin and --min-pixels are "
                 "for images; a plan file gives its own sizes",
@@ -117,7 +117,7 @@ def build(
         building = plan_from_image(
             source,
             resolution,
-            height=height,
+            height=2.5 if height is None else height,
             threshold=threshold,
             negate=negate,
             origin=(origin[0], origin[1]) if origin else None,

@@ -22,6 +22,8 @@ def check_plan(plan: BuildingPlan, *, crossings: bool = True) -> None:
         if level.floor is not None:
             floor = level.floor
             low, high = floor.low, floor.high
+            for value in (*low, *high):
+                _finite(plan, f"the floor of level '{level.name}': a corner", value)
             if not (high[0] - low[0] > EPS and high[1] - low[1] > EPS):
                 raise plan.error(
                     f"the floor of level '{level.name}' is empty: min {_xy(low)}, max {_xy(high)}",

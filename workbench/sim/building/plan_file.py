@@ -413,31 +413,27 @@ class _Reader:
 
 
 def _place_opening(opening: Opening, walls: list[Wall], what: str, reader: _Reader) -> None:
-    """Put ``opening`` (``at`` along the whole chain) on the segment that holds its centre."""
-    if len(walls) == 1:
-        walls[0].openings.append(opening)
-        return
+    """Put ``opening`` (``at`` along the whole chain) on the segment that holds its centre.
+
+    One reaching past the chain's ends is left to :meth:`BuildingPlan.validate` to report.
+    """
     offset = 0.0
     for wall in walls:
         length = wall.length
         if opening.at <= offset + length + EPS or wall is walls[-1]:
             low, high = opening.at - opening.width / 2, opening.at + opening.width / 2
-            if low < offset - EPS or high > offset + length + EPS:
-                corner = wall.start if low < offset - EPS else wall.end
+            before = low < offset - EPS and wall is not walls[0]
+            after = high > offset + length + EPS and wall is not walls[-1]
+            if before or after:
+                corner = wall.start if before else wall.end
                 raise reader.error(
                     f"{what}: {opening.kind} '{opening.name}' reaches round the corner at "
                     f"({corner[0]:g}, {corner[1]:g})",
                     "an opening must lie within one straight segment of the wall",
                 )
+            at = opening.at - offset
             wall.openings.append(
-                Opening(
-                    opening.kind,
-                    opening.name,
-                    opening.at - offset,
-                    opening.width,
-                    opening.height,
-                    opening.sill,
-                )  # fmt: skip
+                Opening(opening.kind, opening.name, at, opening.width, opening.height, opening.sill)
             )
             return
         offset += length
