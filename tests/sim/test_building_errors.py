@@ -72,6 +72,7 @@ BAD_PLANS = [
         "a wall and a wall are both named 'w' (rename one)",
     ),
     ("walls: []", "the plan has no walls"),
+    ("image: map.pgm\nresolution: 0.05", "this is a map_server map, not a building plan"),
     ("- just a list", "the plan must be a mapping of keys to values, got list"),
     ("walls: [{start: [0, 0", "not YAML"),
     (

@@ -141,6 +141,11 @@ def plan_from_dict(doc: Any, *, source: str | None = None, name: str = "building
             :meth:`BuildingPlan.validate`.
     """
     reader = _Reader(source)
+    if isinstance(doc, dict) and "image" in doc and "resolution" in doc:
+        raise reader.error(
+            "this is a map_server map, not a building plan",
+            hint="read it with plan_from_image (workbench world build MAP.yaml does)",
+        )
     plan_doc = reader.mapping(doc, "the plan", _PLAN_KEYS)
     plan = BuildingPlan(name=reader.text(plan_doc, "name", "the plan", name), source=source)
     description = plan_doc.get("description", "")
