@@ -96,12 +96,14 @@ def robot_graph(document: UrdfDocument) -> RobotGraph:
     walk(ros.root)
     for link in order:
         graph.add_node(pydot.Node(link, label=link, shape="box"))
+    parent_joints = ros.parent_joints()
     for joint in joints:
-        graph.add_node(pydot.Node(joint.name, shape="ellipse", color="blue", fontcolor="blue"))
-        xyz = " ".join(cpp_double(v) for v in joint.xyz)
-        rpy = " ".join(cpp_double(v) for v in joint.rpy)
-        graph.add_edge(pydot.Edge(joint.parent, joint.name, label=f"xyz: {xyz} \\nrpy: {rpy}"))
-        graph.add_edge(pydot.Edge(joint.name, joint.child))
+        shown = parent_joints[joint.child]  # as in the .gv, see RosModel.graph_source
+        graph.add_node(pydot.Node(shown.name, shape="ellipse", color="blue", fontcolor="blue"))
+        xyz = " ".join(cpp_double(v) for v in shown.xyz)
+        rpy = " ".join(cpp_double(v) for v in shown.rpy)
+        graph.add_edge(pydot.Edge(joint.parent, shown.name, label=f"xyz: {xyz} \\nrpy: {rpy}"))
+        graph.add_edge(pydot.Edge(shown.name, joint.child))
     return graph
 
 

@@ -142,15 +142,25 @@ class RosModel:
             raise ValueError("urdfdom has no tree for this file")
         lines = ["digraph G {", "node [shape=box];", f'"{self.root}" [label="{self.root}"];']
         walk = list(self._walk(self.root, 1))
+        parent_joints = self.parent_joints()
         lines += [f'"{joint.child}" [label="{joint.child}"];' for _, _, joint in walk]
         lines.append("node [shape=ellipse, color=blue, fontcolor=blue];")
         for _, _, joint in walk:
-            xyz = " ".join(cpp_double(value) for value in joint.xyz)
-            rpy = " ".join(cpp_double(value) for value in joint.rpy)
-            lines.append(f'"{joint.parent}" -> "{joint.name}" [label="xyz: {xyz} \\nrpy: {rpy}"]')
-            lines.append(f'"{joint.name}" -> "{joint.child}"')
+            # urdf_to_graphviz labels the edge with the child's parent joint: for a link
+            # with two parents, the joint urdfdom read last (by name) on both edges.
+            shown = parent_joints[joint.child]
+            xyz = " ".join(cpp_double(value) for value in shown.xyz)
+            rpy = " ".join(cpp_double(value) for value in shown.rpy)
+            label = f"xyz: {xyz} \\nrpy: {rpy}"
+            lines.append(f'"{joint.parent}" -> "{shown.name}" [label="{label}"]')
+            lines.append(f'"{shown.name}" -> "{joint.child}"')
         lines.append("}")
         return "\n".join(lines) + "\n"
+
+    def parent_joints(self) -> dict[str, RosJoint]:
+        """Link -> the joint urdfdom records as its parent: of several, the last by name."""
+        joints = [joint for siblings in self.children.values() for joint in siblings]
+        return {joint.child: joint for joint in sorted(joints, key=lambda joint: joint.name)}
 
     def _walk(self, link: str, depth: int) -> Iterator[tuple[int, int, RosJoint]]:
         """Depth first: (depth, 1-based index among its siblings, joint to the child)."""
