@@ -101,7 +101,11 @@ def run_workbench(path: Path, tmp_path: Path, load: bool = False) -> Run:
 
 
 def split_report(stdout: str) -> tuple[str, list[str]]:
-    """(check_urdf's part, workbench's findings lines) of workbench check's stdout."""
+    """(check_urdf's part, workbench's findings lines) of workbench check's stdout.
+
+    The report is check_urdf's stdout, a blank line when that is not empty, then
+    the findings block starting "workbench found".
+    """
     lines = stdout.splitlines(keepends=True)
     at = next(i for i, line in enumerate(lines) if line.startswith("workbench found"))
     head = "".join(lines[:at])
@@ -296,95 +300,51 @@ def _joint(name: str, parent: str, child: str) -> str:
     return f'<joint name="{name}" type="fixed"><parent link="{parent}"/><child link="{child}"/></joint>\n</robot>'
 
 
+# fmt: off
 MUTATIONS = [
     Mutation("unchanged", _sub(), 0, ""),
-    # ROS reads these (TinyXML); a plain XML parser would not.
+    # ROS reads these (TinyXML knows no namespaces and takes any declaration).
     Mutation("xml version 0.0", _sub(HEAD, '<?xml version="0.0"?>'), 0, ""),
     Mutation("declaration after a comment", _sub(HEAD, f"<!-- by hand -->\n{HEAD}"), 0, ""),
+    Mutation("undeclared prefix", _sub(LAST, '<gazebo><sensor:ray name="r"/></gazebo>\n' + LAST), 0, ""),
+    Mutation("robot version 1.0", _sub('name="mutant"', 'name="mutant" version="1.0"'), 0, ""),
+    Mutation("numbers C++ reads", _sub('xyz="0 0 0.5"', 'xyz="+.5 1. -0e3"'), 0, ""),
     # urdfdom logs an error, skips the element (and the rest of the link), prints the tree.
     Mutation("box with 2 sizes", _sub('size="0.2 0.2 0.2"', 'size="0.2 0.2"'), 0, "link 'base'"),
     Mutation("rpy with 4 numbers", _sub('rpy="0 0 0"', 'rpy="0 0 0 1"'), 0, "link 'base'"),
-    Mutation(
-        "mesh without filename", _sub(ARM_SHAPE, "<mesh/></geometry></visual>"), 0, "link 'arm'"
-    ),
+    Mutation("mesh without filename", _sub(ARM_SHAPE, "<mesh/></geometry></visual>"), 0, "link 'arm'"),
     Mutation("empty geometry", _sub(HAND_SHAPE, ""), 0, "link 'hand'"),
     Mutation("unknown geometry", _sub(HAND_SHAPE, '<cone radius="1"/>'), 0, "link 'hand'"),
     Mutation("inertia without ixy", _sub('ixx="0.001" ixy="0"', 'ixx="0.001"'), 0, "link 'hand'"),
-    Mutation(
-        "colourless material", _sub('<color rgba="0.5 0.5 0.5 1"/>', ""), 0, "material 'grey'"
-    ),
+    Mutation("nameless material", _sub('<material name="grey">', "<material>"), 0, "material ''"),
+    Mutation("colourless material", _sub('<color rgba="0.5 0.5 0.5 1"/>', ""), 0, "material 'grey'"),
     # urdfdom warns (twice: it assigns a link's first visual twice); workbench warns.
-    Mutation(
-        "undefined material", _sub('<material name="grey"/>', '<material name="tin"/>'), 0, ""
-    ),
+    Mutation("undefined material", _sub('<material name="grey"/>', '<material name="tin"/>'), 0, ""),
     # urdfdom keeps these shapes; Drake would abort the whole process on them.
-    Mutation(
-        "negative radius", _sub('radius="0.05" length', 'radius="-0.05" length'), 0, "link 'arm'"
-    ),
-    Mutation(
-        "zero box",
-        _sub('<box size="0.2 0.2 0.2"/></geometry></c', '<box size="0 1 1"/></geometry></c'),
-        0,
-        "link 'base'",
-    ),
+    Mutation("negative radius", _sub('radius="0.05" length', 'radius="-0.05" length'), 0, "link 'arm'"),
+    Mutation("zero box", _sub('"0.2 0.2 0.2"/></geometry></c', '"0 1 1"/></geometry></c'), 0, "link 'base'"),
     # A link with two parents: urdfdom prints it under both; workbench calls it an error.
     Mutation("two parents", _sub(LAST, _joint("again", "base", "hand")), 0, "joint 'again'"),
     # urdfdom refuses the file: check_urdf prints nothing on stdout.
     Mutation("revolute without limit", _sub(LIMIT, ""), 255, "joint 'shoulder'"),
-    Mutation(
-        "prismatic without limit",
-        _sub(LIMIT, "", '"revolute"', '"prismatic"'),
-        255,
-        "joint 'shoulder'",
-    ),
+    Mutation("prismatic without limit", _sub(LIMIT, "", '"revolute"', '"prismatic"'), 255, "joint 'shoulder'"),
     Mutation("limit without effort", _sub('effort="10" ', ""), 255, "joint 'shoulder'"),
-    Mutation(
-        "trailing space in a number", _sub('velocity="1"', 'velocity="1 "'), 255, "joint 'shoulder'"
-    ),
-    Mutation(
-        "mimic without joint",
-        _sub(LIMIT, LIMIT + '<mimic multiplier="2"/>'),
-        255,
-        "joint 'shoulder'",
-    ),
-    Mutation(
-        "robot version 2.0",
-        _sub('name="mutant"', 'name="mutant" version="2.0"'),
-        255,
-        "robot 'mutant'",
-    ),
-    Mutation(
-        "duplicate material",
-        _sub("  <link", '  <material name="grey"/>\n  <link'),
-        255,
-        "material 'grey'",
-    ),
-    Mutation(
-        "duplicate link",
-        _sub('  <link name="hand">', '  <link name="arm"/><link name="hand">'),
-        255,
-        "link 'arm'",
-    ),
-    Mutation(
-        "two roots",
-        _sub('  <link name="hand">', '  <link name="loose"/><link name="hand">'),
-        255,
-        "robot 'mutant'",
-    ),
-    Mutation(
-        "undefined parent",
-        _sub('<parent link="arm"/>', '<parent link="ghost"/>'),
-        255,
-        "joint 'elbow'",
-    ),
+    Mutation("trailing space in a number", _sub('velocity="1"', 'velocity="1 "'), 255, "joint 'shoulder'"),
+    Mutation("line break in a number", _sub('xyz="0 -0 0.2"', 'xyz="0\n0 0.2"'), 255, "joint 'shoulder'"),
+    Mutation("calibration not a number", _sub(LIMIT, LIMIT + '<calibration rising="x"/>'), 255, "joint 'shoulder'"),
+    Mutation("mimic without joint", _sub(LIMIT, LIMIT + '<mimic multiplier="2"/>'), 255, "joint 'shoulder'"),
+    Mutation("robot version 2.0", _sub('name="mutant"', 'name="mutant" version="2.0"'), 255, "robot 'mutant'"),
+    Mutation("duplicate material", _sub("  <link", '  <material name="grey"/>\n  <link'), 255, "material 'grey'"),
+    Mutation("duplicate link", _sub('  <link name="hand">', '  <link name="arm"/><link name="hand">'), 255, "link 'arm'"),
+    Mutation("two roots", _sub('  <link name="hand">', '  <link name="loose"/><link name="hand">'), 255, "robot 'mutant'"),
+    Mutation("undefined parent", _sub('<parent link="arm"/>', '<parent link="ghost"/>'), 255, "joint 'elbow'"),
     Mutation("no root", _sub(LAST, _joint("back", "hand", "base")), 255, "link 'base'"),
     # urdfdom refuses, and workbench cannot read the joint either (one line on stderr).
-    Mutation(
-        "joint rpy with 4 numbers", _sub('rpy="3.14159 0 0"', 'rpy="3.14159 0 0 0"'), 255, None
-    ),
+    Mutation("joint rpy with 4 numbers", _sub('rpy="3.14159 0 0"', 'rpy="3.14159 0 0 0"'), 255, None),
     Mutation("unknown joint type", _sub('type="fixed"', 'type="hinge"'), 255, None),
     Mutation("joint without child", _sub('<child link="hand"/>', ""), 255, None),
 ]
+# fmt: on
 
 
 @pytest.mark.parametrize("case", MUTATIONS, ids=[case.name for case in MUTATIONS])

@@ -65,7 +65,7 @@ def ros_tree(document: UrdfDocument) -> RosModel:
         raise ModelError("ROS's URDF parser cannot walk this tree", path=document.path)
     cause = next(message for message in errors if message.element == errors[-1].element)
     raise ModelError(
-        f"{cause.element}: ROS's URDF parser refuses the file: {cause.text}",
+        f"{cause.element}: ROS's URDF parser refuses the file: {cause.one_line}",
         path=document.path,
         line=cause.line,
         hint="fix that element; 'workbench check' lists every problem",

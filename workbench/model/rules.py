@@ -343,7 +343,7 @@ def urdfdom_findings(ros: RosModel, existing: list[Finding]) -> list[Finding]:
                 "error",
                 "urdfdom-refuses" if refused else "urdfdom-error",
                 message.element,
-                f"ROS's URDF parser {verb}: {message.text}",
+                f"ROS's URDF parser {verb}: {message.one_line}",
                 "fix this element so that ROS reads the robot as you wrote it",
                 message.line,
             )

@@ -391,12 +391,15 @@ _DECLARATION_START = re.compile(rb"<\?xml[\s?]")
 _STANDARD_DECLARATION = re.compile(rb"<\?xml\s+version\s*=\s*[\"']1\.[0-9]+[\"']")
 
 
-def _lenient_prolog(data: bytes) -> bytes:
+def _lenient_prolog(data: bytes) -> tuple[bytes, int]:
     """Blank the XML declarations lxml refuses but ROS's parser (TinyXML) reads past.
 
     A declaration after a comment, or with a version other than 1.x (PyBullet's
     URDFs begin ``<?xml version="0.0"?>``), is replaced by spaces before the
     first element; newlines are kept, so line numbers stay those of the file.
+
+    Returns:
+        The text, and where its first element (or doctype) starts.
     """
     index = 3 if data.startswith(b"\xef\xbb\xbf") else 0
     while index < len(data):
@@ -420,7 +423,64 @@ def _lenient_prolog(data: bytes) -> bytes:
             index = len(data) if end < 0 else end + 2
         else:
             break
-    return data
+    return data, index
+
+
+_START_TAG = re.compile(
+    rb"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<[?!][^>]*>"
+    rb"|<[A-Za-z_:][^\s/>]*(?:\s+[^\s=/>]+\s*=\s*(?:\"[^\"]*\"|'[^']*'))*\s*/?>",
+    re.DOTALL,
+)
+_ATTRIBUTE_VALUE = re.compile(rb"\"[^\"]*\"|'[^']*'")
+
+
+def _keep_attribute_whitespace(data: bytes) -> bytes:
+    """Keep tabs and line breaks inside attribute values, as ROS's parser does.
+
+    An XML parser turns them into spaces, so ``xyz="0<newline>0 1"`` would read
+    as three numbers where ROS finds "0<newline>0" and refuses the joint. They
+    become character references (which XML keeps), and each line break moves
+    just behind the value, so line numbers stay those of the file.
+    """
+
+    def value(match: re.Match[bytes]) -> bytes:
+        text = match.group()
+        if not any(c in text for c in b"\t\n\r"):
+            return text
+        kept = text.replace(b"\t", b"&#9;").replace(b"\r", b"&#13;").replace(b"\n", b"&#10;")
+        return kept + b"\n" * text.count(b"\n")
+
+    def tag(match: re.Match[bytes]) -> bytes:
+        text = match.group()
+        if text.startswith((b"<!", b"<?")):
+            return text
+        return _ATTRIBUTE_VALUE.sub(value, text)
+
+    return _START_TAG.sub(tag, data)
+
+
+_UNDECLARED = re.compile(r"Namespace prefix ([A-Za-z_][\w.-]*) (?:on|for) ")
+_ROOT_TAG = re.compile(rb"<[^\s/>?!]+")
+
+
+def _parse_xml(data: bytes, start: int, parser: etree.XMLParser) -> etree._Element:
+    """Parse the XML; prefixes never declared (``<sensor:camera>``) are declared on the root.
+
+    ROS's parser does not know namespaces, so old URDFs with Gazebo's undeclared
+    ``sensor:`` or ``controller:`` tags load in ROS; the tags keep their prefix here.
+    """
+    for _ in range(32):
+        try:
+            return etree.fromstring(data, parser)
+        except etree.XMLSyntaxError as error:
+            match = _UNDECLARED.match(str(error.msg or ""))
+            root = _ROOT_TAG.match(data, start)
+            if match is None or root is None:
+                raise
+            prefix = match.group(1).encode()
+            declaration = b' xmlns:%s="urn:undeclared:%s"' % (prefix, prefix)
+            data = data[: root.end()] + declaration + data[root.end() :]
+    return etree.fromstring(data, parser)
 
 
 def parse_urdf_text(
@@ -450,7 +510,7 @@ def parse_urdf_text(
         remove_blank_text=False, huge_tree=True, resolve_entities=False, no_network=True
     )
     try:
-        root = etree.fromstring(_lenient_prolog(data), parser)
+        root = _parse_xml(*_lenient_prolog(_keep_attribute_whitespace(data)), parser)
     except etree.XMLSyntaxError as error:
         message = re.sub(r",? line \d+, column \d+", "", str(error.msg or error)).strip()
         raise UrdfSyntaxError(
@@ -472,14 +532,16 @@ def parse_urdf_text(
     materials: dict[str, Material] = {}
     duplicates: list[Material] = []
     for element in root.iterchildren("material"):
-        material_name = element.get("name")
-        if not material_name:
-            reader.fail("<material> has no name", element)
+        material_name = element.get("name") or ""
         texture = element.find("texture")
         reader.link_label = f"material '{material_name}'"
         try:
+            if not material_name:
+                reader.fail("<material> has no name", element, hint='add name="..."')
             rgba = reader.rgba(element, f"material '{material_name}'")
         except _Dropped:
+            if not material_name:
+                continue
             rgba = None
         finally:
             reader.link_label = None

@@ -65,6 +65,11 @@ class RosMessage:
     line: int | None = None
     tree: bool = False
 
+    @property
+    def one_line(self) -> str:
+        """The text with tabs and line breaks (from attribute values) shown as escapes."""
+        return self.text.replace("\r", "\\r").replace("\n", "\\n").replace("\t", "\\t")
+
     def format(self) -> str:
         """The line as console_bridge prints it (without its C++ source location line)."""
         return f"{self.level}:{' ' * (9 - len(self.level) - 1)}{self.text}"
