@@ -31,7 +31,7 @@ from workbench.model.rules import (
 from workbench.model.sources import read_description, resolve_robot_path
 from workbench.model.tree import KinematicTree, build_tree
 from workbench.model.urdf_xml import UrdfDocument, parse_urdf_text
-from workbench.model.urdfdom import read_ros_model
+from workbench.model.urdfdom_reader import read_ros_model
 
 PARSED_BANNER = "---------- Successfully Parsed XML ---------------"
 

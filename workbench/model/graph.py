@@ -20,7 +20,8 @@ from workbench.errors import ModelError
 from workbench.model.sources import read_description, resolve_robot_path
 from workbench.model.tree import build_tree, checked_tree
 from workbench.model.urdf_xml import UrdfDocument, UrdfSyntaxError, parse_urdf_text
-from workbench.model.urdfdom import RosJoint, RosModel, cpp_double, read_ros_model
+from workbench.model.urdfdom import RosJoint, RosModel, cpp_double
+from workbench.model.urdfdom_reader import read_ros_model
 from workbench.optional import require_program
 
 FORMATS = ("pdf", "svg", "png")
