@@ -23,7 +23,9 @@ compared exactly:
 
 Where urdfdom refuses a file workbench also fails, with its own one-line error
 (urdfdom's TinyXML messages are not reproduced). Skips without the tools
-(fails under WORKBENCH_REQUIRE_ALL=1); ``.ci/run`` installs liburdfdom-tools.
+(fails under WORKBENCH_REQUIRE_ALL=1) through conftest's ``require_program``
+fixture: a module-level ``from conftest import`` would find ``tests/bus/conftest.py``
+when the whole suite runs. Install them with ``apt-get install liburdfdom-tools``.
 """
 
 from __future__ import annotations
@@ -38,21 +40,24 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from conftest import REPO_ROOT, skip_or_fail
 
 from workbench.cli import main
 
-CHECK_URDF = Path("/usr/bin/check_urdf")
-URDF_TO_GRAPHVIZ = Path("/usr/bin/urdf_to_graphviz")
+REPO_ROOT = Path(__file__).resolve().parents[2]
 LAB_MODELS = sorted((REPO_ROOT / "urdf").glob("*.urdf"))
 RANDOM_CASES = 40
 
 
-@pytest.fixture(scope="module")
-def ros_tools() -> None:
-    for tool in (CHECK_URDF, URDF_TO_GRAPHVIZ):
-        if not tool.is_file():
-            skip_or_fail(f"{tool} is missing (apt-get install liburdfdom-tools)")
+@dataclass(frozen=True)
+class Tools:
+    check_urdf: str
+    urdf_to_graphviz: str
+
+
+@pytest.fixture
+def ros_tools(require_program) -> Tools:
+    """The real tools, or skip (fail under WORKBENCH_REQUIRE_ALL=1, via conftest's skip_or_fail)."""
+    return Tools(require_program("check_urdf"), require_program("urdf_to_graphviz"))
 
 
 # --- running both sides ----------------------------------------------------------------
@@ -66,18 +71,18 @@ class Run:
     gv: str | None
 
 
-def run_ros(path: Path, tmp_path: Path) -> Run:
+def run_ros(tools: Tools, path: Path, tmp_path: Path) -> Run:
     """check_urdf's output and urdf_to_graphviz's .gv (dot kept off PATH: no rendering)."""
     env = {"PATH": str(tmp_path / "no-programs"), "LC_ALL": "C"}
     done = subprocess.run(
-        [str(CHECK_URDF), str(path)], capture_output=True, text=True, env=env, timeout=60
+        [tools.check_urdf, str(path)], capture_output=True, text=True, env=env, timeout=60
     )
     stderr = [line for line in done.stderr.splitlines() if not line.startswith("         at ")]
     out = tmp_path / "ros"
     out.unlink(missing_ok=True)
     Path(f"{out}.gv").unlink(missing_ok=True)
     subprocess.run(
-        [str(URDF_TO_GRAPHVIZ), str(path), str(out)], capture_output=True, env=env, timeout=60
+        [tools.urdf_to_graphviz, str(path), str(out)], capture_output=True, env=env, timeout=60
     )
     gv = Path(f"{out}.gv")
     return Run(done.returncode, done.stdout, stderr, gv.read_text() if gv.exists() else None)
@@ -112,9 +117,11 @@ def split_report(stdout: str) -> tuple[str, list[str]]:
     return head.removesuffix("\n") if head else head, [line.rstrip("\n") for line in lines[at:]]
 
 
-def compare(path: Path, tmp_path: Path, load: bool = False) -> tuple[Run, Run, list[str]]:
+def compare(
+    tools: Tools, path: Path, tmp_path: Path, load: bool = False
+) -> tuple[Run, Run, list[str]]:
     """Assert everything claimed to match; returns both runs and workbench's findings."""
-    ros, wb = run_ros(path, tmp_path), run_workbench(path, tmp_path, load)
+    ros, wb = run_ros(tools, path, tmp_path), run_workbench(path, tmp_path, load)
     assert "Traceback" not in wb.stdout + "".join(wb.stderr)
     if wb.stdout == "":  # workbench cannot read the file at all: one line, and ROS refuses too
         assert wb.status == 1 and len(wb.stderr) == 1, wb.stderr
@@ -141,7 +148,7 @@ def elements_in_error(findings: list[str]) -> set[str]:
 
 @pytest.mark.parametrize("path", LAB_MODELS, ids=[path.name for path in LAB_MODELS])
 def test_lab_models_match(ros_tools, tmp_path, path):
-    ros, wb, _ = compare(path, tmp_path)
+    ros, wb, _ = compare(ros_tools, path, tmp_path)
     assert ros.status == 0 and ros.gv is not None
     assert wb.stdout.startswith("robot name is: ")
 
@@ -222,7 +229,7 @@ def random_robot(seed: int) -> str:
 def test_random_trees_match(ros_tools, tmp_path, seed):
     path = tmp_path / f"random_{seed}.urdf"
     path.write_text(random_robot(seed))
-    ros, wb, _ = compare(path, tmp_path)
+    ros, wb, _ = compare(ros_tools, path, tmp_path)
     assert ros.status == 0 and wb.gv is not None
 
 
@@ -352,7 +359,7 @@ def test_malformed_variants(ros_tools, tmp_path, case):
     path = tmp_path / "mutant.urdf"
     path.write_text(case.mutate(BASE))
     # Drake's load runs once here, on the shape it would abort the process on.
-    ros, wb, findings = compare(path, tmp_path, load=case.name == "negative radius")
+    ros, wb, findings = compare(ros_tools, path, tmp_path, load=case.name == "negative radius")
     assert ros.status == case.ros_status
     if case.error_on is None:
         assert wb.stdout == ""
