@@ -51,6 +51,13 @@ def _moving_links(document: UrdfDocument, tree: KinematicTree) -> dict[str, str]
     return moving
 
 
+def _moves_itself(link: str, tree: KinematicTree) -> bool:
+    """Whether ``link`` hangs on a movable joint of its own (a massless link welded to its
+    parent, such as a tool frame, merges into the parent: ROS and Drake accept it)."""
+    joint = tree.parent_joint.get(link)
+    return joint is not None and joint.type != "fixed"
+
+
 def inertia_findings(document: UrdfDocument, tree: KinematicTree) -> list[Finding]:
     findings = []
     moving = _moving_links(document, tree)
@@ -82,7 +89,7 @@ def inertia_findings(document: UrdfDocument, tree: KinematicTree) -> list[Findin
                     inertial.line,
                 )
             )
-        elif inertial.mass <= 0:
+        elif inertial.mass < 0 or (inertial.mass == 0 and _moves_itself(link.name, tree)):
             findings.append(
                 Finding(
                     "error",
@@ -109,7 +116,7 @@ def inertia_findings(document: UrdfDocument, tree: KinematicTree) -> list[Findin
         moments = np.linalg.eigvalsh(inertial.inertia)
         scale = max(float(np.abs(moments).max()), 1e-300)
         if np.allclose(inertial.inertia, 0.0):
-            if link.name in moving:
+            if _moves_itself(link.name, tree):
                 findings.append(
                     Finding(
                         "warning",
