@@ -296,6 +296,10 @@ class Subscription:
                 self.callback(msg)
             else:
                 self.callback(msg, self.callback_args)
+        except ShutdownError as error:
+            # a message delivered while the node shuts down (Ctrl-C) whose callback publishes:
+            # the stop, not a bug of the callback (rospy drops it the same way)
+            self.node.get_logger().debug(f"callback on {self.topic} during shutdown: {error}")
         except Exception as error:  # a user's callback must not kill the executor
             self.node.get_logger().error(
                 f"bad callback: {getattr(self.callback, '__name__', self.callback)} on "
