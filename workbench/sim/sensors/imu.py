@@ -76,7 +76,9 @@ class Imu:
         r = R_WB @ np.asarray(X_BS.translation())
         w = np.asarray(V_WB.rotational())
         alpha = np.asarray(A_WB.rotational())
-        a_point = np.asarray(A_WB.translational()) + np.cross(alpha, r) + np.cross(w, np.cross(w, r))
+        a_point = (
+            np.asarray(A_WB.translational()) + np.cross(alpha, r) + np.cross(w, np.cross(w, r))
+        )
         gravity = np.asarray(plant.gravity_field().gravity_vector())  # the world's, as Gazebo
         angular = R_WS.T @ w
         specific = R_WS.T @ (a_point - gravity)

@@ -35,6 +35,7 @@ class GazeboRosLaser(RosSensorPlugin):
 
     sensor_types = LASER_TYPES
     label = "laser"
+    publisher: Any = None
 
     def setup(self, sdf: SdfElement) -> None:
         assert isinstance(self.spec, LaserSpec)

@@ -70,7 +70,9 @@ def image(array: np.ndarray, encoding: str, frame: str, seconds: float) -> Any:
     msg.encoding = encoding
     msg.is_bigendian = 0
     msg.step = int(data.strides[0])
-    msg.data = np.frombuffer(data.astype(data.dtype.newbyteorder("<"), copy=False).tobytes(), np.uint8)
+    msg.data = np.frombuffer(
+        data.astype(data.dtype.newbyteorder("<"), copy=False).tobytes(), np.uint8
+    )
     return msg
 
 

@@ -176,7 +176,9 @@ def _candidate_pairs(
     along = np.einsum("pi,pi->p", rel_p, directions[beams])
     miss2 = np.einsum("pi,pi->p", rel_p, rel_p) - along**2
     r_p = radius[pair_rows]
-    hit = ~np.isfinite(r_p) | ((miss2 <= r_p**2 * (1 + 1e-9) + 1e-12) & (along + r_p >= t_min) & (along - r_p <= t_max))
+    hit = ~np.isfinite(r_p) | (
+        (miss2 <= r_p**2 * (1 + 1e-9) + 1e-12) & (along + r_p >= t_min) & (along - r_p <= t_max)
+    )
     return beams[hit], pair_rows[hit]
 
 
@@ -217,7 +219,9 @@ def _box(o: np.ndarray, d: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.nd
 def _sphere(o: np.ndarray, d: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     r = p[:, 0]
     return _quadratic(
-        np.einsum("pi,pi->p", d, d), np.einsum("pi,pi->p", o, d), np.einsum("pi,pi->p", o, o) - r * r
+        np.einsum("pi,pi->p", d, d),
+        np.einsum("pi,pi->p", o, d),
+        np.einsum("pi,pi->p", o, o) - r * r,
     )
 
 

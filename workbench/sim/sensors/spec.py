@@ -182,7 +182,8 @@ def parse_sensor(xml: str | Any, *, model: str, link: str) -> SensorSpec:
     if kind in IMU_TYPES:
         return _imu(reader, common)
     raise reader.error(
-        "type", f"is '{kind}'; workbench simulates {', '.join(LASER_TYPES + CAMERA_TYPES + IMU_TYPES)}"
+        "type",
+        f"is '{kind}'; workbench simulates {', '.join(LASER_TYPES + CAMERA_TYPES + IMU_TYPES)}",
     )
 
 
@@ -382,4 +383,6 @@ class _Reader:
             bias_mean=self.number(f"{path}/bias_mean", 0.0),
             bias_stddev=self.number(f"{path}/bias_stddev", 0.0, minimum=0.0),
         )
-        return noise if (noise.stddev or noise.mean or noise.bias_mean or noise.bias_stddev) else None
+        return (
+            noise if (noise.stddev or noise.mean or noise.bias_mean or noise.bias_stddev) else None
+        )
