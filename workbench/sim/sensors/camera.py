@@ -114,7 +114,9 @@ class Camera:
         scene_graph = world.scene_graph
         context = scene_graph.GetMyContextFromRoot(world.context)
         query = scene_graph.get_query_output_port().Eval(context)
-        X_WC = X_WS.multiply(RigidTransform(RollPitchYaw(-np.pi / 2, 0.0, -np.pi / 2), np.zeros(3)))
+        X_WC = X_WS.multiply(
+            RigidTransform(RollPitchYaw(-np.pi / 2, 0.0, -np.pi / 2).ToRotationMatrix())
+        )
         color_camera, depth_camera = self._render_cameras()
         frame = CameraFrame(None, None, float(world.time))
         spec_noise = self.spec.noise if noise else None

@@ -101,7 +101,14 @@ def read_scene(plant: Any, scene_graph: Any) -> CollisionScene:
     )
 
     inspector = scene_graph.model_inspector()
-    kinds, params, centers, radii, bodies, R_BG, p_BG, names = [], [], [], [], [], [], [], []
+    kinds: list[int] = []
+    params: list[np.ndarray] = []
+    centers: list[np.ndarray] = []
+    radii: list[float] = []
+    bodies: list[int] = []
+    R_BG: list[np.ndarray] = []
+    p_BG: list[np.ndarray] = []
+    names: list[str] = []
     planes: dict[int, np.ndarray] = {}
     world_index = plant.world_body().index()
     for geometry in inspector.GetAllGeometryIds(Role.kProximity):

@@ -59,7 +59,7 @@ class GazeboRosImuSensor(RosSensorPlugin):
             from pydrake.math import RollPitchYaw
 
             values = [float(v) for v in str(sdf.get("rpyOffset", "0 0 0")).split()]
-            q = RollPitchYaw(values).ToQuaternion()
+            q = RollPitchYaw(*values[:3]).ToQuaternion()
             self.offset = np.array([q.x(), q.y(), q.z(), q.w()])
         self._rng = np.random.default_rng(self.seed + 1)
         #: The last reading (before the plugin's gaussianNoise), or None.

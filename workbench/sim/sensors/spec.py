@@ -250,8 +250,8 @@ def _camera(reader: _Reader, common: dict[str, Any]) -> CameraSpec:
 
 
 def _imu(reader: _Reader, common: dict[str, Any]) -> ImuSpec:
-    rate = [None, None, None]
-    accel = [None, None, None]
+    rate: list[NoiseSpec | None] = [None, None, None]
+    accel: list[NoiseSpec | None] = [None, None, None]
     legacy_rate = reader.noise("imu/noise/rate", typed_by="imu/noise/type")
     legacy_accel = reader.noise("imu/noise/accel", typed_by="imu/noise/type")
     for i, axis in enumerate("xyz"):
