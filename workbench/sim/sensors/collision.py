@@ -143,14 +143,17 @@ def read_scene(plant: Any, scene_graph: Any) -> CollisionScene:
         frame = inspector.GetFrameId(geometry)
         body = plant.GetBodyFromFrameId(frame)
         X_FG = inspector.GetPoseInFrame(geometry)
-        kinds.append(kind)
-        params.append(param)
-        centers.append(center)
-        radii.append(radius)
-        bodies.append(0 if body is None or body.index() == world_index else int(body.index()))
-        R_BG.append(X_FG.rotation().matrix())
-        p_BG.append(X_FG.translation())
-        names.append(inspector.GetName(geometry))
+        R = X_FG.rotation().matrix()
+        pieces = _box_pieces(param) if kind == BOX else [(param, np.zeros(3))]
+        for piece, offset in pieces:
+            kinds.append(kind)
+            params.append(piece)
+            centers.append(center)
+            radii.append(float(np.linalg.norm(piece)) if kind == BOX else radius)
+            bodies.append(0 if body is None or body.index() == world_index else int(body.index()))
+            R_BG.append(R)
+            p_BG.append(X_FG.translation() + R @ offset)
+            names.append(inspector.GetName(geometry))
     n = len(kinds)
     table = ShapeTable(
         kind=np.asarray(kinds, dtype=np.int64),
@@ -169,6 +172,28 @@ def read_scene(plant: Any, scene_graph: Any) -> CollisionScene:
         names=names,
         scene_graph=scene_graph,
     )
+
+
+def _box_pieces(half: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
+    """A long box as boxes of at most twice its middle half extent, end to end along its length.
+
+    The pieces fill the box exactly, so a ray from outside enters the first piece
+    where it enters the box; their bounding spheres are tight, which is what the
+    broad phase needs (a 12 m wall's own sphere would cover every beam).
+    """
+    axis = int(np.argmax(half))
+    middle = float(np.sort(half)[1])
+    count = int(min(64, np.ceil(half[axis] / max(middle, 0.05, half[axis] / 64))))
+    if count <= 1:
+        return [(half, np.zeros(3))]
+    piece = half.copy()
+    piece[axis] = half[axis] / count
+    pieces = []
+    for k in range(count):
+        offset = np.zeros(3)
+        offset[axis] = -half[axis] + (2 * k + 1) * piece[axis]
+        pieces.append((piece.copy(), offset))
+    return pieces
 
 
 def _hull(mesh: Any) -> tuple[np.ndarray, np.ndarray, float]:

@@ -90,9 +90,36 @@ def cast_rays(
     result = np.full(directions.shape[0], np.inf)
     if len(shapes) == 0 or directions.shape[0] == 0:
         return result
-    beams, rows = _candidate_pairs(shapes, origin, directions, t_min, t_max, R_WS, active)
+    beams, rows, nearest = _candidate_pairs(shapes, origin, directions, t_min, t_max, R_WS, active)
     if beams.size == 0:
         return result
+    # nearest first: each beam's pair whose bounding sphere starts first, then only the
+    # pairs whose sphere starts before the hit found (occluded shapes are skipped)
+    unbounded = ~np.isfinite(nearest)  # half spaces: always tested
+    floor = np.full(directions.shape[0], np.inf)
+    np.minimum.at(floor, beams[~unbounded], nearest[~unbounded])
+    first = unbounded | (nearest <= floor[beams])
+    np.minimum.at(
+        result, beams[first], _narrow(shapes, origin, directions, beams[first], rows[first], t_min)
+    )
+    rest = ~first & (nearest <= result[beams])
+    if rest.any():
+        np.minimum.at(
+            result, beams[rest], _narrow(shapes, origin, directions, beams[rest], rows[rest], t_min)
+        )
+    result[result > t_max] = np.inf
+    return result
+
+
+def _narrow(
+    shapes: ShapeTable,
+    origin: np.ndarray,
+    directions: np.ndarray,
+    beams: np.ndarray,
+    rows: np.ndarray,
+    t_min: float,
+) -> np.ndarray:
+    """Exact first crossing of each (beam, shape) pair."""
     t = np.full(beams.shape[0], np.inf)
     R = shapes.R_WG[rows]
     o_G = np.einsum("pji,pj->pi", R, origin - shapes.p_WG[rows])
@@ -106,9 +133,7 @@ def cast_rays(
     pick = np.nonzero(kinds == CONVEX)[0]
     if pick.size:
         t[pick] = _convex(o_G[pick], d_G[pick], rows[pick], shapes.planes, t_min)
-    t[t > t_max] = np.inf
-    np.minimum.at(result, beams, t)
-    return result
+    return t
 
 
 def _candidate_pairs(
@@ -119,8 +144,8 @@ def _candidate_pairs(
     t_max: float,
     R_WS: np.ndarray | None,
     active: np.ndarray | None,
-) -> tuple[np.ndarray, np.ndarray]:
-    """(beam, shape row) pairs whose ray may meet the shape's bounding sphere."""
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(beam, shape row, distance to the bounding sphere) of pairs whose ray may meet the sphere."""
     centers = np.einsum("nij,nj->ni", shapes.R_WG, shapes.center_G) + shapes.p_WG
     rel = centers - origin
     distance = np.linalg.norm(rel, axis=1)
@@ -131,7 +156,7 @@ def _candidate_pairs(
         keep &= active
     rows = np.nonzero(keep)[0]
     if rows.size == 0:
-        return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
+        return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), np.zeros(0)
     R = np.eye(3) if R_WS is None else np.asarray(R_WS, dtype=float)
     d_S = directions @ R
     rel_S = rel[rows] @ R
@@ -176,10 +201,13 @@ def _candidate_pairs(
     along = np.einsum("pi,pi->p", rel_p, directions[beams])
     miss2 = np.einsum("pi,pi->p", rel_p, rel_p) - along**2
     r_p = radius[pair_rows]
-    hit = ~np.isfinite(r_p) | (
+    finite = np.isfinite(r_p)
+    hit = ~finite | (
         (miss2 <= r_p**2 * (1 + 1e-9) + 1e-12) & (along + r_p >= t_min) & (along - r_p <= t_max)
     )
-    return beams[hit], pair_rows[hit]
+    with np.errstate(invalid="ignore"):
+        entry = np.where(finite, along - np.sqrt(np.maximum(r_p**2 - miss2, 0.0)), -np.inf)
+    return beams[hit], pair_rows[hit], entry[hit]
 
 
 def _first_crossing(t_in: np.ndarray, t_out: np.ndarray, t_min: float) -> np.ndarray:
