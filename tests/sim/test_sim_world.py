@@ -209,3 +209,26 @@ def test_shapes_and_poses_in_the_spatial_vocabulary():
         World().add_box("b", size=(1, 1, 1), X_WB="origin")
     with pytest.raises(SimulationError, match="mesh file for 'm' not found"):
         World().add_shape("m", spatial.make_shape("mesh", filename="/no/such.obj"))
+
+
+def test_hundreds_of_obstacles_beside_the_ground_build_and_run():
+    """Drake 1.51 crashed making a context for a half space anchored among a few hundred
+    anchored shapes; obstacles sit on welded bodies instead (a subprocess: a crash is a
+    signal, not an exception)."""
+    import subprocess
+    import sys
+
+    script = (
+        "from pydrake.math import RigidTransform\n"
+        "from workbench.sim import World\n"
+        "w = World()\n"
+        "for i in range(400):\n"
+        "    w.add_box(f'b{i}', (0.2, 0.2, 0.5), RigidTransform([0.3 * (i % 20), 0.3 * (i // 20), 0.25]))\n"
+        "w.build()\n"
+        "w.advance_to(0.01)\n"
+        "print(len(w.model_names()))\n"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", script], capture_output=True, text=True, timeout=300
+    )
+    assert done.returncode == 0, done.stderr[-2000:]

@@ -85,11 +85,18 @@ class _HalfSpaceNotice(logging.Filter):
 def add_obstacle(plant: Any, name: str, shape: Any, X_WB: Any, rgba: Any) -> None:
     """A static shape welded to the world, with collision and visual geometry."""
     from pydrake.multibody.plant import CoulombFriction
+    from pydrake.multibody.tree import SpatialInertia, default_model_instance
 
-    world = plant.world_body()
-    plant.RegisterCollisionGeometry(world, X_WB, shape, name, CoulombFriction(0.8, 0.6))
+    # On a body welded to the world rather than on the world body: a few hundred shapes
+    # anchored beside the ground's half space crash Drake 1.51 (its broad phase copies a
+    # tree holding the half space's infinite box when a context is made). Welded, they are
+    # just as static and filtered against each other and the ground.
+    body = plant.AddRigidBody(name, default_model_instance(), SpatialInertia.Zero())
+    plant.WeldFrames(plant.world_frame(), body.body_frame(), X_WB)
+    identity = rigid_transform([0.0, 0.0, 0.0])
+    plant.RegisterCollisionGeometry(body, identity, shape, name, CoulombFriction(0.8, 0.6))
     color = np.array(rgba if rgba is not None else [0.55, 0.45, 0.35, 1.0], dtype=float)
-    plant.RegisterVisualGeometry(world, X_WB, shape, name, color)
+    plant.RegisterVisualGeometry(body, identity, shape, name, color)
 
 
 def add_placed_model(plant: Any, placed: PlacedModel, scene_graph: Any = None) -> Any:
