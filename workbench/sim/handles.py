@@ -114,6 +114,50 @@ class ModelHandle:
         self._world.body(f"{self.name}::{link}")  # checks the name
         self._server.set_plugin_wrench(self._owner, f"{self.name}::{link}", force, torque)
 
+    @property
+    def sim_time(self) -> float:
+        """Simulated time, s."""
+        return float(self._world.time)
+
+    @property
+    def time_step(self) -> float:
+        """The physics step, s."""
+        return float(self._world.time_step)
+
+    def has_joint(self, joint: str) -> bool:
+        """True when the model has a joint called ``joint``."""
+        return bool(self._world.plant.HasJointNamed(joint, self._world.model_instance(self.name)))
+
+    def joint_links(self, joint: str) -> tuple[str, str]:
+        """``(parent, child)``: the links a joint connects."""
+        item = self._world.joint(self.name, joint)
+        return item.parent_body().name(), item.child_body().name()
+
+    def link_pose(self, link: str) -> Any:
+        """``X_WL``, a link's frame in the world (a RigidTransform)."""
+        body = self._world.body(f"{self.name}::{link}")
+        return self._world.plant.EvalBodyPoseInWorld(self._context(), body)
+
+    def joint_inertia(self, joint: str) -> float:
+        """The inertia a 1-dof joint moves when the rest of the model is free, kg m² or kg.
+
+        ``1 / (M⁻¹)ᵢᵢ`` over the model's own velocities at the current configuration:
+        a torque ``τ`` alone changes the joint's velocity by ``τ dt / joint_inertia``
+        in a step ``dt`` (contacts and other forces aside).
+        """
+        plant = self._world.plant
+        item = self._world.joint(self.name, joint)
+        instance = self._world.model_instance(self.name)
+        indices = np.arange(plant.num_velocities())
+        mine = plant.GetVelocitiesFromArray(instance, indices.astype(float)).astype(int)
+        M = plant.CalcMassMatrix(self._context())[np.ix_(mine, mine)]
+        column = int(np.flatnonzero(mine == item.velocity_start())[0])
+        return float(1.0 / np.linalg.inv(M)[column, column])
+
+    def set_twist(self, v_W: Sequence[float], w_W: Sequence[float]) -> None:
+        """Set the root link's linear and angular velocity now (W, m/s and rad/s)."""
+        self._world.set_model_state(self.name, self.pose(), v_W, w_W)
+
 
 class WorldHandle:
     """The running world, for world plugins."""

@@ -21,7 +21,8 @@ file must define exactly one plugin class (a subclass of :class:`Plugin`), or
 name it: ``my_plugin.py:MyPlugin``.
 
 ``update`` runs before every physics step, or every ``1 / update_rate`` seconds
-of simulated time when the class (or the ``<update_rate>`` parameter) sets one.
+of simulated time when the class, ``load`` (on the instance) or the
+``<update_rate>`` parameter sets one.
 Joint efforts and link wrenches a plugin applies last until its next update.
 A plugin that raises is reported with its file and line and disabled; the
 simulation keeps running.
@@ -51,7 +52,17 @@ _LOG = logging.getLogger("workbench.sim.plugins")
 
 #: Gazebo's ROS plugins that workbench provides, by their library name: ``module:Class``.
 #: A ``<plugin filename="libgazebo_ros_diff_drive.so">`` in a model loads the class here.
-BUILTIN_PLUGINS: dict[str, str] = {}
+BUILTIN_PLUGINS: dict[str, str] = {
+    "libgazebo_ros_diff_drive.so": (
+        "workbench.sim.gazebo_ros_plugins.diff_drive:GazeboRosDiffDrive"
+    ),
+    "libgazebo_ros_joint_state_publisher.so": (
+        "workbench.sim.gazebo_ros_plugins.joint_state_publisher:GazeboRosJointStatePublisher"
+    ),
+    "libgazebo_ros_planar_move.so": (
+        "workbench.sim.gazebo_ros_plugins.planar_move:GazeboRosPlanarMove"
+    ),
+}
 
 
 class UnavailablePluginError(SimulationError):

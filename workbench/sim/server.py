@@ -383,6 +383,9 @@ class SimServer:
         except Exception as error:  # noqa: BLE001 - a plugin's failure
             self._disable(slot, error, "load")
             return None
+        if not sdf.has("update_rate"):  # the plugin may set its rate in load
+            rate = float(getattr(plugin, "update_rate", 0.0) or 0.0)
+            slot.period = 1.0 / rate if rate > 0 else 0.0
         self._plugins.append(slot)
         _LOG.info("loaded plugin '%s' (%s)", spec.name, spec.filename)
         return plugin
