@@ -7,7 +7,7 @@ N, N m; vectors in the world frame W.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -138,21 +138,23 @@ class ModelHandle:
         body = self._world.body(f"{self.name}::{link}")
         return self._world.plant.EvalBodyPoseInWorld(self._context(), body)
 
-    def joint_inertia(self, joint: str) -> float:
-        """The inertia a 1-dof joint moves when the rest of the model is free, kg m² or kg.
+    def add_velocity_motors(self, limits: Mapping[str, float]) -> None:
+        """Drive joints with velocity motors ``{joint: effort limit}`` (Gazebo's
+        ``Joint::SetParam("fmax")`` with ``"vel"``; see :mod:`workbench.sim.motors`).
 
-        ``1 / (M⁻¹)ᵢᵢ`` over the model's own velocities at the current configuration:
-        a torque ``τ`` alone changes the joint's velocity by ``τ dt / joint_inertia``
-        in a step ``dt`` (contacts and other forces aside).
+        They hold velocity 0 until :meth:`set_motor_velocities`. The world's diagram
+        is rebuilt (every model keeps its state).
         """
-        plant = self._world.plant
-        item = self._world.joint(self.name, joint)
-        instance = self._world.model_instance(self.name)
-        indices = np.arange(plant.num_velocities())
-        mine = plant.GetVelocitiesFromArray(instance, indices.astype(float)).astype(int)
-        M = plant.CalcMassMatrix(self._context())[np.ix_(mine, mine)]
-        column = int(np.flatnonzero(mine == item.velocity_start())[0])
-        return float(1.0 / np.linalg.inv(M)[column, column])
+        self._world.add_velocity_motors(self.name, limits)
+        self._server.rebuilt()
+
+    def set_motor_velocities(self, velocities: Mapping[str, float]) -> None:
+        """Targets ``{joint: velocity}`` of the motors, rad/s or m/s, until changed."""
+        self._world.set_motor_targets(self.name, velocities)
+
+    def motor_efforts(self) -> dict[str, float]:
+        """``{joint: effort}`` the motors applied in the last step, N m or N."""
+        return self._world.motor_efforts(self.name)
 
     def set_twist(self, v_W: Sequence[float], w_W: Sequence[float]) -> None:
         """Set the root link's linear and angular velocity now (W, m/s and rad/s)."""

@@ -19,16 +19,17 @@ Parameters, defaults and behaviour are gazebo_plugins' ``GazeboRosDiffDrive``
     </plugin>
 
 A ``geometry_msgs/Twist`` on ``commandTopic`` (relative to the robot's namespace,
-see :mod:`.ros_context`) sets ``linear.x`` and ``angular.z``; every ``1 /
-updateRate`` s of simulated time the wheels get rim speeds ``v -+ w b / 2``
-(left, right), ramped by ``wheelAcceleration`` when it is set, and the plugin
-publishes ``nav_msgs/Odometry`` on ``odometryTopic``, the transform
-``odometryFrame -> robotBaseFrame``, and if asked the wheel transforms (parent
-link -> wheel link, pose relative to the model) and ``joint_states`` (the two
-wheel positions, right first). The wheels are driven by velocity motors limited
-to ``wheelTorque`` (:mod:`.joint_motor`) before every physics step, and with
-``encoder`` odometry the pose is integrated from the wheel speeds before every
-step too (:mod:`.encoder_odometry`); ``world`` odometry is the model's true pose.
+see :mod:`.ros_context`) sets ``linear.x`` and ``angular.z``. Every ``1 /
+updateRate`` s of simulated time (0: every physics step) the plugin publishes
+``nav_msgs/Odometry`` on ``odometryTopic``, the transform ``odometryFrame ->
+robotBaseFrame``, and if asked the wheel transforms (parent link -> wheel link,
+pose relative to the model) and ``joint_states`` (the two wheel positions, right
+first); then it gives the wheels rim speeds ``v -+ w b / 2`` (left, right),
+ramped by ``wheelAcceleration`` when that is set. The wheel joints get velocity
+motors limited to ``wheelTorque`` (:mod:`workbench.sim.motors`, Gazebo's
+``"vel"``/``"fmax"`` joint parameters) that hold those speeds in every physics
+step, through contact. ``world`` odometry is the model's true pose; ``encoder``
+odometry integrates the wheels' turns (:mod:`.encoder_odometry`).
 
 ``legacyMode`` (which swapped the wheels' roles before ROS Melodic) is gone from
 noetic's plugin and is ignored here as there; ``true`` gets a warning.
@@ -41,7 +42,6 @@ from typing import Any
 
 from workbench.errors import SimulationError
 from workbench.sim.gazebo_ros_plugins.encoder_odometry import EncoderOdometry
-from workbench.sim.gazebo_ros_plugins.joint_motor import VelocityMotor
 from workbench.sim.gazebo_ros_plugins.odometry import Odometry2D, OdometryPublisher
 from workbench.sim.gazebo_ros_plugins.ros_context import PluginRos
 from workbench.sim.gazebo_ros_plugins.wheel_states import WheelStatePublisher
@@ -49,14 +49,9 @@ from workbench.sim.plugins import ModelPlugin, SdfElement, UpdateInfo
 
 _LOG = logging.getLogger("workbench.sim.gazebo_ros_plugins")
 
-#: A tolerance on the update period, s: an update due at 10 ms fires at 10 ms.
-_EARLY = 1e-6
-
 
 class GazeboRosDiffDrive(ModelPlugin):
     """Differential drive: wheel motors from ``cmd_vel``, odometry and transforms out."""
-
-    update_rate = 0.0  # before every physics step, as Gazebo's WorldUpdateBegin
 
     def load(self, model: Any, sdf: SdfElement, node: Any) -> None:
         ros = PluginRos("DiffDrive", sdf, model.name, node)
@@ -65,8 +60,8 @@ class GazeboRosDiffDrive(ModelPlugin):
         self.diameter = ros.number("wheelDiameter", 0.15)
         self.acceleration = ros.number("wheelAcceleration", 0.0)
         self.torque = ros.number("wheelTorque", 5.0)
-        rate = ros.number("updateRate", 100.0)
-        self.period = 1.0 / rate if rate > 0.0 else 0.0
+        #: Hz; the server calls :meth:`update` at this rate (0: every physics step).
+        self.update_rate = max(ros.number("updateRate", 100.0), 0.0)
         self.encoder = ros.choice("odometrySource", {"encoder": True, "world": False}, False)
         if ros.boolean("legacyMode", False):
             _LOG.warning(
@@ -74,12 +69,11 @@ class GazeboRosDiffDrive(ModelPlugin):
                 "<leftJoint> and <rightJoint> if the robot turns the wrong way)",
                 ros.info,
             )
-        self.right = _wheel(model, ros, "rightJoint", "right_joint")
-        self.left = _wheel(model, ros, "leftJoint", "left_joint")
-        self.motors = (
-            VelocityMotor(model, self.right, self.torque),
-            VelocityMotor(model, self.left, self.torque),
+        self.wheels = (  # right first, as in Gazebo's plugin
+            _wheel(model, ros, "rightJoint", "right_joint"),
+            _wheel(model, ros, "leftJoint", "left_joint"),
         )
+        model.add_velocity_motors({joint: self.torque for joint in self.wheels})
         publish_odometry = ros.boolean("publishTf", True)
         self.odometry = OdometryPublisher(
             ros,
@@ -89,17 +83,17 @@ class GazeboRosDiffDrive(ModelPlugin):
             transform=publish_odometry and ros.boolean("publishOdomTF", True),
         )
         self.publish_odometry = publish_odometry
-        self.wheels = WheelStatePublisher(
+        self.wheel_states = WheelStatePublisher(
             ros,
             model,
-            (self.right, self.left),
+            self.wheels,
             transforms=ros.boolean("publishWheelTF", False),
             joint_states=ros.boolean("publishWheelJointState", False),
         )
         self.odometer = EncoderOdometry(self.separation, self.diameter)
         self.command = (0.0, 0.0)
         self.ramped = [0.0, 0.0]  # Gazebo's wheel_speed_instr_, right and left, m/s
-        self.last_update = self.last_odometry = model.sim_time
+        self.last: tuple[float, list[float]] | None = None  # time and wheel angles
         if node is not None:
             node.create_subscription(
                 ros.topic(ros.string("commandTopic", "cmd_vel")),
@@ -114,43 +108,51 @@ class GazeboRosDiffDrive(ModelPlugin):
         self.command = (float(message.linear.x), float(message.angular.z))
 
     def reset(self) -> None:
-        self.last_update = self.last_odometry = self.model.sim_time
         self.odometer.reset()
         self.command = (0.0, 0.0)
+        self.last = None
+        self.model.set_motor_velocities({joint: 0.0 for joint in self.wheels})
+
+    def close(self) -> None:
+        try:  # the wheels brake, as Gazebo's motors hold their last target
+            self.model.set_motor_velocities({joint: 0.0 for joint in self.wheels})
+        except Exception:  # noqa: BLE001 - the model may be gone already
+            pass
 
     def update(self, info: UpdateInfo) -> None:
         now = info.sim_time
-        if self.encoder:
-            left = self.model.joint_velocity(self.left)
-            right = self.model.joint_velocity(self.right)
-            self.odometer.advance(left, right, now - self.last_odometry)
-            self.last_odometry = now
-        elapsed = now - self.last_update
-        if elapsed > self.period - _EARLY:
-            if self.publish_odometry:
-                self.odometry.publish(now, self._odometry())
-            self.wheels.publish(now)
-            self._set_targets(elapsed)
-            self.last_update += self.period
-        for motor in self.motors:
-            motor.apply()
+        angles = [self.model.joint_position(joint) for joint in self.wheels]
+        elapsed = 0.0
+        if self.last is not None:
+            then, before = self.last
+            elapsed = now - then
+            if self.encoder:
+                right, left = (a - b for a, b in zip(angles, before, strict=True))
+                self.odometer.advance(left, right, elapsed)
+        self.last = (now, angles)
+        if self.publish_odometry:
+            self.odometry.publish(now, self._odometry())
+        self.wheel_states.publish(now)
+        self._set_targets(elapsed)
 
     def _set_targets(self, elapsed: float) -> None:
         """New wheel targets from the command, ramped as Gazebo does."""
         forward, turn = self.command
         radius = self.diameter / 2.0
         wanted = (forward + turn * self.separation / 2.0, forward - turn * self.separation / 2.0)
-        current = [self.model.joint_velocity(m.joint) * radius for m in self.motors]
+        current = [self.model.joint_velocity(joint) * radius for joint in self.wheels]
         close = any(abs(w - c) < 0.01 for w, c in zip(wanted, current, strict=True))
         if self.acceleration == 0.0 or close:
-            for motor, speed in zip(self.motors, wanted, strict=True):
-                motor.target = speed / radius
-            return
-        step = self.acceleration * elapsed
-        for i, motor in enumerate(self.motors):
-            gap = wanted[i] - current[i]
-            self.ramped[i] += min(gap, step) if gap >= 0.0 else max(gap, -step)
-            motor.target = self.ramped[i] / radius
+            speeds = list(wanted)
+        else:
+            step = self.acceleration * elapsed
+            for i in range(2):
+                gap = wanted[i] - current[i]
+                self.ramped[i] += min(gap, step) if gap >= 0.0 else max(gap, -step)
+            speeds = list(self.ramped)
+        self.model.set_motor_velocities(
+            {joint: speed / radius for joint, speed in zip(self.wheels, speeds, strict=True)}
+        )
 
     def _odometry(self) -> Odometry2D:
         if self.encoder:

@@ -1,17 +1,22 @@
-"""Dead reckoning from two wheel speeds: ``diff_drive``'s ``odometrySource`` ``encoder``.
+"""Dead reckoning from two wheels: ``diff_drive``'s ``odometrySource`` ``encoder``.
 
-gazebo_plugins' ``UpdateOdometryEncoder`` (noetic), run before every physics step:
-with wheel angular velocities ``wl``, ``wr`` (rad/s), radius ``r`` and separation
-``b`` over the time ``dt`` since the last call, the wheels roll ``sl = wl r dt``
-and ``sr = wr r dt``, and the pose advances along the chord at the mean heading
-(Siegwart, *Autonomous Mobile Robots*, 2011, p. 337)::
+gazebo_plugins' ``UpdateOdometryEncoder`` (noetic): when the wheels (radius
+``r``, separation ``b``) have rolled ``sl`` and ``sr`` since the last update, the
+pose advances along the chord at the mean heading (Siegwart, *Autonomous Mobile
+Robots*, 2011, p. 337)::
 
     dtheta = (sr - sl) / b
     dx = (sl + sr) / 2 * cos(theta + dtheta / 2)
     dy = (sl + sr) / 2 * sin(theta + dtheta / 2)
 
-The twist it reports is that step's: ``v = |(dx, dy)| / dt`` (negative when the
-wheels roll backwards), ``w = dtheta / dt``, no sideways speed.
+The twist it reports is the last interval's: ``v = |(dx, dy)| / dt`` (negative
+when the wheels roll backwards), ``w = dtheta / dt``, no sideways speed.
+
+Gazebo runs this before every physics step with ``s = wheel velocity * r * dt``;
+here it runs at the plugin's ``updateRate`` with ``s = change of the wheel angle
+* r``. Both are the angle the wheel turned (the physics step advances the angle
+by velocity x step), so the pose is the same; the twist is averaged over the
+update period rather than the last step.
 """
 
 from __future__ import annotations
@@ -38,11 +43,11 @@ class EncoderOdometry:
         self.v = self.w = 0.0
 
     def advance(self, left: float, right: float, dt: float) -> None:
-        """Integrate wheel angular velocities ``left``, ``right`` (rad/s) over ``dt`` s."""
+        """Move on by the wheels' turns ``left``, ``right`` (rad) made in ``dt`` s."""
         if dt <= 0.0:
             return
-        sl = left * self.radius * dt
-        sr = right * self.radius * dt
+        sl = left * self.radius
+        sr = right * self.radius
         dtheta = (sr - sl) / self.separation
         heading = self.theta + dtheta / 2.0
         dx = (sl + sr) / 2.0 * math.cos(heading)
