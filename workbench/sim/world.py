@@ -729,7 +729,9 @@ class World:
         """Target velocities ``{joint: v}`` of a model's motors (rad/s or m/s) until changed."""
         from workbench.sim.motors import fix_motor_targets
 
-        placed = self._models[model]
+        placed = self._models.get(model)
+        if placed is None:
+            raise SimulationError(f"no model named '{model}' in the world")
         placed.motor_targets.update({joint: float(v) for joint, v in velocities.items()})
         plant_context = self.plant.GetMyMutableContextFromRoot(self.context)
         fix_motor_targets(self.plant, plant_context, placed.instance, placed.motor_targets)

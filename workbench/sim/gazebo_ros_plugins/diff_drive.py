@@ -37,6 +37,7 @@ noetic's plugin and is ignored here as there; ``true`` gets a warning.
 
 from __future__ import annotations
 
+import contextlib
 import logging
 from typing import Any
 
@@ -114,10 +115,8 @@ class GazeboRosDiffDrive(ModelPlugin):
         self.model.set_motor_velocities({joint: 0.0 for joint in self.wheels})
 
     def close(self) -> None:
-        try:  # the wheels brake, as Gazebo's motors hold their last target
+        with contextlib.suppress(SimulationError):  # the model may be gone already
             self.model.set_motor_velocities({joint: 0.0 for joint in self.wheels})
-        except Exception:  # noqa: BLE001 - the model may be gone already
-            pass
 
     def update(self, info: UpdateInfo) -> None:
         now = info.sim_time
