@@ -54,6 +54,8 @@ _LOG = logging.getLogger("workbench.sim.gazebo_ros_plugins")
 class GazeboRosDiffDrive(ModelPlugin):
     """Differential drive: wheel motors from ``cmd_vel``, odometry and transforms out."""
 
+    wheels: tuple[str, ...] = ()  # right, left; none until loaded
+
     def load(self, model: Any, sdf: SdfElement, node: Any) -> None:
         ros = PluginRos("DiffDrive", sdf, model.name, node)
         self.model = model
@@ -115,6 +117,8 @@ class GazeboRosDiffDrive(ModelPlugin):
         self.model.set_motor_velocities({joint: 0.0 for joint in self.wheels})
 
     def close(self) -> None:
+        if not self.wheels:
+            return
         with contextlib.suppress(SimulationError):  # the model may be gone already
             self.model.set_motor_velocities({joint: 0.0 for joint in self.wheels})
 
