@@ -234,3 +234,22 @@ def test_legacy_mode_is_ignored_as_in_noetic_with_a_warning(caplog):
         assert rig.pose()[2] - yaw0 > 0.2  # a positive angular.z still turns left
     finally:
         rig.close()
+
+
+def test_the_wheel_motors_survive_a_spawn_and_brake_after_a_reset():
+    """A spawn rebuilds Drake's diagram: the motors and their targets are rebuilt with it."""
+    from sim_helpers import box_model
+
+    rig = Rig(custom_bot(), joint_positions=TRAILING)
+    try:
+        rig.command(0.5)
+        rig.run(0.5)
+        x = rig.pose()[0]
+        rig.server.spawn(box_model("crate"), [3.0, 3.0, 0.5])
+        rig.run(0.5)
+        assert rig.pose()[0] - x == pytest.approx(0.25, rel=0.03)
+        rig.server.reset(time_too=False)
+        rig.run(0.3)
+        assert rig.pose()[0] == pytest.approx(0.0, abs=0.01)  # the command was forgotten
+    finally:
+        rig.close()
