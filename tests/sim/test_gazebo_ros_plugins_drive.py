@@ -17,6 +17,7 @@ import math
 import numpy as np
 import pytest
 from drive_helpers import RADIUS, SEPARATION, Rig, custom_bot, yaw_of
+from sim_helpers import box_model
 
 TRAILING = {"front_caster_of_wheel_joint": math.pi}  # the caster starts behind its pivot
 AXLE_BEHIND = 0.2825  # m, the wheel joints' x in base_link
@@ -238,8 +239,6 @@ def test_legacy_mode_is_ignored_as_in_noetic_with_a_warning(caplog):
 
 def test_the_wheel_motors_survive_a_spawn_and_brake_after_a_reset():
     """A spawn rebuilds Drake's diagram: the motors and their targets are rebuilt with it."""
-    from sim_helpers import box_model
-
     rig = Rig(custom_bot(), joint_positions=TRAILING)
     try:
         rig.command(0.5)
