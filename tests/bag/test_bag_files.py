@@ -203,3 +203,43 @@ def test_unwritable_paths(tmp_path):
         BagWriter(afile / "x.bag").open()
     with pytest.raises(BagWriteError, match="unknown compression"):
         BagWriter(tmp_path / "x.bag", compression="zip")
+
+
+def _index_pos(data: bytes) -> int:
+    at = data.index(b"index_pos=") + len(b"index_pos=")
+    return int.from_bytes(data[at : at + 8], "little")
+
+
+def test_recording_killed_while_writing_a_chunk_out_is_read_up_to_it(tmp_path):
+    """A chunk goes where the index was; killed meanwhile, the file is scanned to the damage."""
+    bag = BagWriter(tmp_path / "live", chunk_seconds=60.0).open()
+    for i in range(10):
+        bag.write("/turtle1/pose", Pose(x=float(i)), T0 + i)
+    bag.flush()
+    before = bag.active_path.read_bytes()  # indexed: chunk 1, then the index
+    for i in range(10, 20):
+        bag.write("/turtle1/pose", Pose(x=float(i)), T0 + i)
+    bag.flush()
+    after = bag.active_path.read_bytes()  # chunk 1, chunk 2, then the new index
+    bag.close()
+    end = _index_pos(before)
+    assert summarize(tmp_path / "live.bag").message_count == 20
+    at = before.index(b"index_pos=") + len(b"index_pos=")
+    unindexed = before[:at] + bytes(8) + before[at + 8 : end]  # index_pos=0, as while writing
+    chunk_end = _index_pos(after)
+    for written, expected in ((40, 10), (chunk_end - end, 20)):
+        killed = tmp_path / f"killed{written}.bag.active"
+        # part of chunk 2 written over the old index, the rest of which is still there
+        killed.write_bytes(unindexed + after[end : end + written] + before[end + written :])
+        summary = summarize(killed)
+        assert not summary.indexed
+        assert [m.msg.x for m in read_messages(killed)] == [float(i) for i in range(expected)]
+
+
+def test_a_closed_writer_refuses_more_messages(tmp_path):
+    bag = BagWriter(tmp_path / "done")
+    bag.write("/turtle1/pose", Pose(x=1.0), T0)  # opens on first use
+    bag.close()
+    with pytest.raises(BagWriteError, match="closed"):
+        bag.write("/turtle1/pose", Pose(x=2.0), T0 + 1)
+    assert summarize(tmp_path / "done.bag").message_count == 1

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import time
+
 import pytest
 
 from workbench.bag import play, read_messages, summarize
@@ -97,3 +99,55 @@ def test_recorded_turtle_replays_the_same_poses(tmp_path):
     assert len(seen) == 63
     bus.shutdown()
     bus2.shutdown()
+
+
+def test_a_connection_per_publisher_with_its_name_and_latching_and_none_for_silent_topics(
+    tmp_path,
+):
+    bus = Bus(threaded=False)
+    first = Node("first", bus=bus)  # nodes advertise /rosout, and log nothing here
+    second = Node("second", bus=bus)
+    static = first.create_publisher("/tf_static", "tf2_msgs/TFMessage", latch=True)
+    static.publish(static.data_class())
+    poses = [node.create_publisher("/turtle1/pose", Pose) for node in (first, second)]
+    recorder = Recorder(Node("record", bus=bus), tmp_path / "c.bag", all_topics=True)
+    assert "/rosout" in recorder.poll_topics()
+    for i in range(3):
+        for pub in poses:
+            pub.publish(Pose(x=float(i)))
+    while bus.spin_once(0.0):
+        pass
+    summary = summarize(recorder.close())
+    bus.shutdown()
+    stored = sorted((c.topic, c.callerid, c.latching) for c in summary.connections.values())
+    assert stored == [
+        ("/tf_static", "/first", True),
+        ("/turtle1/pose", "/first", False),
+        ("/turtle1/pose", "/second", False),
+    ]
+    assert summary.topic_counts() == {"/tf_static": 1, "/turtle1/pose": 6}
+
+
+def test_recorder_writes_chunks_out_while_it_runs(tmp_path, monkeypatch):
+    from workbench.bag import record
+
+    monkeypatch.setattr(record, "CHUNK_SECONDS", 0.1)
+    bus = Bus(threaded=False)
+    pub = Node("talker", bus=bus, disable_rosout=True).create_publisher("/turtle1/pose", Pose)
+    recorder = Recorder(
+        Node("record", bus=bus, disable_rosout=True), tmp_path / "w.bag", topics=["/turtle1/pose"]
+    )
+    recorder.poll_topics()
+    for i in range(5):
+        pub.publish(Pose(x=float(i)))
+    active = tmp_path / "w.bag.active"
+    deadline = time.monotonic() + 10
+    while time.monotonic() < deadline and summarize(active).message_count < 5:
+        time.sleep(0.05)  # no more messages: the flusher thread writes the chunk out
+    summary = summarize(active)  # what a killed recorder would leave
+    assert summary.indexed and summary.message_count == 5
+    assert [m.msg.x for m in read_messages(active)] == [0.0, 1.0, 2.0, 3.0, 4.0]
+    pub.publish(Pose(x=5.0))
+    path = recorder.close()
+    bus.shutdown()
+    assert [m.msg.x for m in read_messages(path)] == [0.0, 1.0, 2.0, 3.0, 4.0, 5.0]

@@ -12,23 +12,15 @@ import subprocess
 
 import numpy as np
 import pytest
-from skipping import skip_or_fail
+from skipping import ros_python as find_ros_python
 
 from workbench.bag import BagWriter, read_messages
 from workbench.msgs.geometry_msgs import Twist, Vector3
 
-ROS_PYTHON = "/usr/bin/python3"
-
 
 @pytest.fixture(scope="module")
 def ros_python() -> str:
-    try:
-        done = subprocess.run([ROS_PYTHON, "-c", "import rosbag"], capture_output=True, timeout=60)
-    except (OSError, subprocess.TimeoutExpired):
-        done = None
-    if done is None or done.returncode != 0:
-        skip_or_fail("ROS 1's rosbag is not installed (apt-get install python3-rosbag)")
-    return ROS_PYTHON
+    return find_ros_python("rosbag", "python3-rosbag")
 
 
 def _values(seed: int, n: int = 500) -> list[float]:
@@ -76,3 +68,83 @@ def test_workbench_reads_what_ros_writes(tmp_path, ros_python, compression):
     assert done.returncode == 0, done.stderr
     read = list(read_messages(path))
     assert [m.msg.linear.x for m in read] == values
+
+
+def _ros(ros_python: str, script: str, *args: str) -> str:
+    done = subprocess.run(
+        [ros_python, "-c", script, *args], capture_output=True, text=True, timeout=120
+    )
+    assert done.returncode == 0, done.stderr
+    return done.stdout
+
+
+READ_ALL = (
+    "import json, sys, rosbag\n"
+    "bag = rosbag.Bag(sys.argv[1])\n"
+    "conns = {c.id: {k: v.decode() for k, v in c.header.items() if k != 'message_definition'}\n"
+    "         for c in bag._connections.values()}\n"
+    "rows = [[t, m.linear.x, h.get('callerid', b'').decode()] for t, m, s, h in\n"
+    "        bag.read_messages(return_connection_header=True)]\n"
+    "print(json.dumps({'connections': sorted(conns.values(), key=str), 'rows': rows}))\n"
+)
+
+
+def test_ros_sees_each_publisher_as_its_own_connection(tmp_path, ros_python):
+    path = tmp_path / "callers.bag"
+    with BagWriter(path) as bag:
+        for i in range(4):
+            name = "/left" if i % 2 else "/right"
+            bag.write("/cmd_vel", Twist(linear=Vector3(x=i)), 100.0 + i, callerid=name)
+        bag.write("/latched", Twist(), 105.0, callerid="/static", latching=True)
+    seen = json.loads(_ros(ros_python, READ_ALL, str(path)))
+    headers = {(h["topic"], h["callerid"]): h for h in seen["connections"]}
+    assert sorted(headers) == [
+        ("/cmd_vel", "/left"),
+        ("/cmd_vel", "/right"),
+        ("/latched", "/static"),
+    ]
+    assert headers[("/latched", "/static")]["latching"] == "1"
+    assert "latching" not in headers[("/cmd_vel", "/left")]
+    assert headers[("/cmd_vel", "/left")]["type"] == "geometry_msgs/Twist"
+    assert [row[1:] for row in seen["rows"][:4]] == [
+        [0.0, "/right"],
+        [1.0, "/left"],
+        [2.0, "/right"],
+        [3.0, "/left"],
+    ]
+
+
+def test_ros_reads_a_recording_that_was_cut_off_after_a_chunk_was_written_out(tmp_path, ros_python):
+    bag = BagWriter(tmp_path / "live", chunk_seconds=60.0).open()
+    for i in range(10):
+        bag.write("/cmd_vel", Twist(linear=Vector3(x=i)), 100.0 + i)
+    bag.flush()  # what the recorder does every second
+    bag.write("/cmd_vel", Twist(linear=Vector3(x=10)), 110.0)  # still in memory
+    killed = tmp_path / "killed.bag.active"
+    killed.write_bytes(bag.active_path.read_bytes())
+    bag.close()
+    # an indexed file as it is: no 'rosbag reindex' needed
+    rows = json.loads(_ros(ros_python, READ_ALL, str(killed)))["rows"]
+    assert [row[1] for row in rows] == [float(i) for i in range(10)]
+
+
+def test_ros_reindexes_an_unindexed_workbench_recording(tmp_path, ros_python):
+    # rosbag rewrites the bag header in place: it must not overwrite the first chunk
+    bag = BagWriter(tmp_path / "live", chunk_size=1024).open()
+    for i in range(100):
+        bag.write("/cmd_vel", Twist(linear=Vector3(x=i)), 100.0 + i)
+    cut = tmp_path / "cut.bag"
+    cut.write_bytes(bag.active_path.read_bytes())
+    bag.close()
+    written = len(list(read_messages(cut)))
+    assert 0 < written < 100
+    reindex = (
+        "import sys, rosbag\n"
+        "bag = rosbag.Bag(sys.argv[1], 'a', allow_unindexed=True)\n"
+        "for _ in bag.reindex(): pass\n"
+        "bag.close()\n"
+    )
+    _ros(ros_python, reindex, str(cut))
+    rows = json.loads(_ros(ros_python, READ_ALL, str(cut)))["rows"]
+    assert [row[1] for row in rows] == [float(i) for i in range(written)]
+    assert [m.msg.linear.x for m in read_messages(cut)] == [float(i) for i in range(written)]

@@ -273,6 +273,17 @@ def test_bad_callback_is_logged_and_the_bus_keeps_going(bus, capsys):
     assert "bad callback" in capsys.readouterr().err
 
 
+def test_a_callback_publishing_on_a_node_shut_down_meanwhile_is_quiet(bus, capsys):
+    """Ctrl-C closes a node while a delivered message's callback republishes (issue 14, 18)."""
+    relay = Node("relay", bus=bus)
+    out = relay.create_publisher("out", String)
+    relay.create_subscription("x", String, lambda msg: out.publish(msg))
+    Node("talker", bus=bus).create_publisher("x", String).publish("a")
+    out.unregister()  # as the node's shutdown does
+    drain(bus)
+    assert "bad callback" not in capsys.readouterr().err
+
+
 def test_a_refusal_the_handler_means_is_one_line_without_traceback(capsys):
     """rospy: a handler's ServiceException is reported without a traceback (issue 14, item 18)."""
     from workbench.errors import WorkbenchError

@@ -7,7 +7,7 @@ import subprocess
 import sys
 
 import pytest
-from bus_process_helpers import REPO, free_port, wait_for
+from process_helpers import REPO, free_port, wait_for
 
 from workbench.bus import AnyMsg, Bus, CoreError, Node, ServiceError, TopicTypeError
 from workbench.msgs.beginner_tutorials import AddTwoInts

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import time
 
-from bus_process_helpers import wait_for
+from process_helpers import wait_for
 
 from workbench.bus import Bus, Node
 from workbench.msgs.rosgraph_msgs import Clock

@@ -41,7 +41,7 @@ from typing import Any
 
 import numpy as np
 import pytest
-from skipping import skip_or_fail
+from skipping import ros_python as find_ros_python
 
 from workbench.bag import BagWriter, read_messages
 from workbench.cli import topic as topic_cli
@@ -49,7 +49,6 @@ from workbench.introspect.echo import field_type, format_echo, get_field
 from workbench.msgs import Duration, Time, get_type
 from workbench.msgs._store import store
 
-ROS_PYTHON = "/usr/bin/python3"
 ROS_MODULES = (
     "rostopic, rosbag, std_msgs.msg, geometry_msgs.msg, sensor_msgs.msg, nav_msgs.msg, "
     "tf2_msgs.msg, diagnostic_msgs.msg"
@@ -150,19 +149,11 @@ SPECIAL_FLOATS = [
 
 @pytest.fixture(scope="module")
 def ros_python() -> str:
-    try:
-        done = subprocess.run(
-            [ROS_PYTHON, "-c", f"import {ROS_MODULES}"], capture_output=True, timeout=60
-        )
-    except (OSError, subprocess.TimeoutExpired):
-        done = None
-    if done is None or done.returncode != 0:
-        skip_or_fail(
-            "ROS 1's rostopic and message packages are not installed (apt-get install "
-            "python3-rostopic python3-sensor-msgs python3-nav-msgs python3-diagnostic-msgs "
-            "python3-tf2-msgs python3-geometry-msgs)"
-        )
-    return ROS_PYTHON
+    return find_ros_python(
+        ROS_MODULES,
+        "python3-rostopic python3-sensor-msgs python3-nav-msgs python3-diagnostic-msgs "
+        "python3-tf2-msgs python3-geometry-msgs",
+    )
 
 
 class Random:

@@ -36,13 +36,12 @@ from typing import Any
 
 import numpy as np
 import pytest
-from skipping import skip_or_fail
+from skipping import ros_python as find_ros_python
 
 from workbench.msgs import Time
 from workbench.tf import Buffer, TransformDataWarning
 from workbench.tf.exceptions import TransformException
 
-ROS_PYTHON = "/usr/bin/python3"
 DRIVER = Path(__file__).with_name("tf2_driver.py")
 SCENARIOS = 200
 SEED = 20240714
@@ -52,13 +51,7 @@ Step = list[Any]
 
 @pytest.fixture(scope="module")
 def tf2_python() -> str:
-    try:
-        done = subprocess.run([ROS_PYTHON, "-c", "import tf2_py"], capture_output=True, timeout=60)
-    except (OSError, subprocess.TimeoutExpired):
-        done = None
-    if done is None or done.returncode != 0:
-        skip_or_fail("ROS 1's tf2 is not installed (apt-get install python3-tf2-ros)")
-    return ROS_PYTHON
+    return find_ros_python("tf2_py", "python3-tf2-ros")
 
 
 # --- random scenarios ---------------------------------------------------------------------

@@ -1,4 +1,4 @@
-"""ROS 1 bags (v2.0) with rosbags: write, read, summarize, replay and recover.
+"""ROS 1 bags (v2.0): write (as rosbag lays them out), read, summarize, replay and recover.
 
 Use::
 

@@ -5,12 +5,20 @@ receives, stamped with its receive time on the node's clock. It subscribes
 in the bus's raw mode: messages from other processes go into the bag as the
 bytes that arrived, never decoded and encoded again. With ``all_topics`` it
 keeps looking for new topics while it runs, as ``rosbag record -a`` does.
+
+As rosbag, it stores one connection per topic and publisher, with the
+publisher's name (``callerid``) and ``latching=1`` for a latched publisher,
+and writes a connection only with its first message (a topic that stays
+silent leaves no trace). A background thread writes the open chunk out once
+its oldest message is :data:`CHUNK_SECONDS` old, so a recorder killed outright
+(SIGKILL, power cut of the process) loses at most about that much.
 """
 
 from __future__ import annotations
 
 import os
 import re
+import sys
 import threading
 import time
 from collections.abc import Iterable
@@ -19,6 +27,12 @@ from typing import Any
 from workbench.bag.writer import BagWriter
 
 QUEUE_SIZE = 0  # unbounded: the recorder must not drop messages
+
+#: Wall-clock seconds of messages a recorder keeps in memory at most before writing them out.
+CHUNK_SECONDS = 1.0
+
+#: How often (seconds) the recorder's flusher thread looks for a chunk to write out.
+FLUSH_PERIOD = 0.05
 
 
 class Recorder:
@@ -44,7 +58,7 @@ class Recorder:
         compression: str = "none",
     ) -> None:
         self.node = node
-        self.writer = BagWriter(path, compression=compression)
+        self.writer = BagWriter(path, compression=compression, chunk_seconds=CHUNK_SECONDS)
         self.all_topics = all_topics
         self.exclude = re.compile(exclude) if exclude else None
         self._wanted = [node.resolve_name(t) for t in topics]
@@ -52,6 +66,12 @@ class Recorder:
         self.received = 0
         self._lock = threading.Lock()
         self.writer.open()
+        self.error: BaseException | None = None  # why the flusher thread stopped, if it failed
+        self._stop = threading.Event()
+        self._flusher = threading.Thread(
+            target=self._flush_periodically, name=f"bag flusher {self.writer.path}", daemon=True
+        )
+        self._flusher.start()
 
     @property
     def path(self):
@@ -82,7 +102,6 @@ class Recorder:
                 raw=True,
                 inline=True,  # write where the message arrives: no hand-over to the executor
             )
-            self.writer.add_connection(topic, typename, callerid=self.node.name)
             new.append(topic)
         return new
 
@@ -91,8 +110,28 @@ class Recorder:
         with self._lock:  # callbacks of different topics may run on different threads
             if not self.writer.is_open:  # arrived while the recording was being closed
                 return
-            self.writer.write(topic, t=raw.recv_ns, typename=raw.type, data=raw.data)
+            self.writer.write(
+                topic,
+                t=raw.recv_ns,
+                typename=raw.type,
+                data=raw.data,
+                callerid=raw.callerid or self.node.name,
+                latching=raw.latching,
+            )
             self.received += 1
+
+    def _flush_periodically(self) -> None:
+        """Write the open chunk out when due, also while no message arrives."""
+        while not self._stop.wait(FLUSH_PERIOD):
+            try:
+                with self._lock:
+                    if not self.writer.is_open:
+                        return
+                    self.writer.flush_if_due()
+            except Exception as error:  # a full disk: say so once; close() reports it again
+                self.error = error
+                print(f"[ERROR] recording to {self.writer.active_path}: {error}", file=sys.stderr)
+                return
 
     def flush(self, timeout: float = 10.0) -> bool:
         """Wait until every message the subscriptions received has been written.
@@ -126,6 +165,9 @@ class Recorder:
                         break
             self._subscriptions.clear()
         finally:
+            self._stop.set()
+            if self._flusher is not threading.current_thread():
+                self._flusher.join(timeout=5.0)
             with self._lock:
                 written = self.writer.close()
         return written

@@ -50,12 +50,20 @@ class RawMessage:
         recv_ns: Receive time on the bus clock (wall or simulated), integer nanoseconds.
         callerid: The publishing node's name (ROS's connection header ``callerid``).
         topic: The topic it was published on.
+        latching: Whether the publisher latches (ROS's connection header ``latching``).
     """
 
-    __slots__ = ("data", "type", "md5", "recv_ns", "callerid", "topic")
+    __slots__ = ("data", "type", "md5", "recv_ns", "callerid", "topic", "latching")
 
     def __init__(
-        self, data: bytes, type: str, md5: str, recv_ns: int, callerid: str, topic: str
+        self,
+        data: bytes,
+        type: str,
+        md5: str,
+        recv_ns: int,
+        callerid: str,
+        topic: str,
+        latching: bool = False,
     ) -> None:
         self.data = data
         self.type = type
@@ -63,6 +71,7 @@ class RawMessage:
         self.recv_ns = recv_ns
         self.callerid = callerid
         self.topic = topic
+        self.latching = latching
 
     def deserialize(self) -> Message:
         """Decode into a message object (needs the type to be known here)."""
@@ -163,7 +172,13 @@ class Publisher:
         from workbench.msgs import serialize
 
         return RawMessage(
-            serialize(msg), self.type, self.md5, self._clock.now_ns(), self.node.name, self.topic
+            serialize(msg),
+            self.type,
+            self.md5,
+            self._clock.now_ns(),
+            self.node.name,
+            self.topic,
+            self.latch,
         )
 
     def _coerce(self, args: tuple, kwargs: dict) -> Message:
@@ -281,6 +296,10 @@ class Subscription:
                 self.callback(msg)
             else:
                 self.callback(msg, self.callback_args)
+        except ShutdownError as error:
+            # a message delivered while the node shuts down (Ctrl-C) whose callback publishes:
+            # the stop, not a bug of the callback (rospy drops it the same way)
+            self.node.get_logger().debug(f"callback on {self.topic} during shutdown: {error}")
         except Exception as error:  # a user's callback must not kill the executor
             self.node.get_logger().error(
                 f"bad callback: {getattr(self.callback, '__name__', self.callback)} on "

@@ -99,6 +99,10 @@ def run_script(script: Path, argv: list[str]) -> int:
     return 0
 
 
+#: Set in the environment of every process a launch starts.
+LAUNCHED_ENV = "WORKBENCH_LAUNCHED"
+
+
 @dataclass
 class _Process:
     spec: NodeSpec
@@ -182,6 +186,7 @@ class Launcher:
 
     def _spawn(self, process: _Process) -> None:
         env = dict(os.environ, WORKBENCH_MASTER_URI=self.uri, PYTHONUNBUFFERED="1")
+        env[LAUNCHED_ENV] = "1"  # Ctrl-C reaches it twice (terminal and launcher): expected
         spec = process.spec
         if spec.output == "screen":
             stdout = stderr = None

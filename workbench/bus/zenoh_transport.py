@@ -11,12 +11,18 @@ from every other process's graph. Before a session closes (node shutdown,
 bus shutdown, interpreter exit) it flushes: a barrier query to each
 subscribing session waits until what was published has arrived there.
 The publishing node's name travels in the data key (ROS's ``callerid``).
+
+A latched publisher numbers its messages (the sample's attachment is
+``"<publisher id> <number>"``, and its latched reply carries the same), so
+a subscriber that gets one message both live and as the latched reply of a
+publisher it just found takes it once, and knows the publisher latches.
 """
 
 from __future__ import annotations
 
 import atexit
 import functools
+import itertools
 import json
 import os
 import sys
@@ -59,6 +65,36 @@ RAW_CHANNEL_SIZE = 65536
 
 #: Consecutive failures of a raw subscription's pump thread before it gives up.
 PUMP_RESTARTS = 5
+
+#: Numbers the latched publishers of this process (part of their messages' attachment).
+_latched_ids = itertools.count(1)
+
+
+class _Latched:
+    """The last message of a latched publisher, numbered (what its queryable answers)."""
+
+    __slots__ = ("origin", "seq", "msg", "data", "lock")
+
+    def __init__(self, origin: str) -> None:
+        self.origin = origin  # unique to this publisher instance, across processes
+        self.seq = 0  # number of the last message sent
+        self.msg: Any = None  # the last message sent, and its bytes
+        self.data = b""
+        self.lock = threading.Lock()
+
+    def attachment(self, seq: int) -> str:
+        return f"{self.origin} {seq}"
+
+
+def parse_latched(attachment: Any) -> tuple[str, int] | None:
+    """A latched publisher's attachment -> ``(publisher id, message number)``."""
+    if attachment is None:
+        return None
+    origin, _, seq = attachment.to_string().rpartition(" ")
+    try:
+        return origin, int(seq)
+    except ValueError:
+        return None
 
 
 def report(text: str) -> None:
@@ -157,6 +193,9 @@ class ZenohTransport:
         self._parsed_keys: dict[str, tuple[str, str, str, str]] = {}
         self._unflushed: set[str] = set()  # topics published on since the last flush
         self._pumps: list[threading.Thread] = []  # threads draining raw subscriptions
+        # id(subscription) -> latched publisher id -> number of the last message delivered
+        self._latched_seen: dict[int, dict[str, int]] = {}
+        self._latched_lock = threading.Lock()  # delivery of latched publishers' messages
         self._pool = ThreadPoolExecutor(max_workers=4, thread_name_prefix="workbench-service")
         if not self._ping_core():
             self.session.close()
@@ -405,23 +444,14 @@ class ZenohTransport:
         topic = pub.topic
         mark = self._unflushed.add
 
-        def send(msg: Any) -> None:
-            put(serialize(msg))
-            mark(topic)
-
         if pub.latch:
-            latch_key = keys.latch_key(pub.topic, pub.type, pub.md5, pub.node.name, self.sid)
+            send = self._latched_sender(pub, put, declared)
+        else:
 
-            def answer(query: Any) -> None:
-                msg = pub.last_message
-                if msg is not None:
-                    query.reply(latch_key, serialize(msg))
+            def send(msg: Any) -> None:
+                put(serialize(msg))
+                mark(topic)
 
-            declared.append(
-                self.session.declare_queryable(
-                    latch_key, self._handler(answer, f"the latched message of {pub.topic}")
-                )
-            )
         with self._lock:
             self._declared[id(pub)] = declared
         self._token(
@@ -429,6 +459,38 @@ class ZenohTransport:
             keys.endpoint_token(
                 self.sid, self.pid, "pub", pub.node.name, pub.topic, pub.type, pub.md5
             ),
+        )
+        return send
+
+    def _latched_sender(self, pub: Publisher, put: Any, declared: list[Any]) -> Sender:
+        """The sender of a latched publisher, and the queryable answering its last message."""
+        latch_key = keys.latch_key(pub.topic, pub.type, pub.md5, pub.node.name, self.sid)
+        latched = _Latched(f"{self.sid}.{next(_latched_ids)}")
+        topic = pub.topic
+        mark = self._unflushed.add
+
+        def send(msg: Any) -> None:  # numbered, so that no subscriber gets it twice
+            data = serialize(msg)
+            with latched.lock:
+                latched.seq += 1
+                latched.msg, latched.data = msg, data
+                put(data, attachment=latched.attachment(latched.seq))
+            mark(topic)
+
+        def answer(query: Any) -> None:
+            last = pub.last_message
+            if last is None:
+                return
+            with latched.lock:
+                sent, data, seq = latched.msg, latched.data, latched.seq
+            if last is not sent:  # being published: it gets the next number
+                data, seq = serialize(last), seq + 1
+            query.reply(latch_key, data, attachment=latched.attachment(seq))
+
+        declared.append(
+            self.session.declare_queryable(
+                latch_key, self._handler(answer, f"the latched message of {pub.topic}")
+            )
         )
         return send
 
@@ -500,10 +562,42 @@ class ZenohTransport:
             if sample_session == self.sid:
                 continue
             _topic, type_name, md5, callerid = parsed
-            self._deliver(sub, type_name, md5, callerid, reply.ok.payload.to_bytes(), {})
+            numbered = parse_latched(reply.ok.attachment)
+            data = reply.ok.payload.to_bytes()
+            if numbered is None:  # a publisher that does not number its messages
+                self._deliver(sub, type_name, md5, callerid, data, {}, latching=True)
+            else:
+                self._deliver_latched(sub, numbered, type_name, md5, callerid, data, {})
+
+    def _deliver_latched(
+        self,
+        sub: Subscription,
+        numbered: tuple[str, int],
+        type_name: str,
+        md5: str,
+        callerid: str,
+        data: bytes,
+        decoded: dict[str, Any],
+    ) -> None:
+        """Deliver a latched publisher's message unless ``sub`` already has it or a newer one.
+
+        Its latched reply and the same message sent live may both reach a subscription that
+        appeared as it was published; in order, each message of the publisher at most once.
+        """
+        origin, seq = numbered
+        with self._latched_lock:
+            if sub.closed:
+                return
+            seen = self._latched_seen.setdefault(id(sub), {})
+            if seen.get(origin, 0) >= seq:
+                return
+            seen[origin] = seq
+            self._deliver(sub, type_name, md5, callerid, data, decoded, latching=True)
 
     def unsubscribe(self, sub: Subscription) -> None:
         self._drop(sub)
+        with self._latched_lock:
+            self._latched_seen.pop(id(sub), None)
         key = (sub.topic, sub.raw)
         with self._lock:
             zsub, count = self._topic_subs.get(key, (None, 0))
@@ -561,6 +655,13 @@ class ZenohTransport:
                 self._parsed_keys[key] = parsed
             _topic, type_name, md5, callerid = parsed
             data = sample.payload.to_bytes()
+            numbered = parse_latched(sample.attachment)
+            if numbered is not None:  # from a latched publisher: at most once per subscription
+                shared: dict[str, Any] = {}
+                for sub in subs:
+                    if sub.raw is raw:
+                        self._deliver_latched(sub, numbered, type_name, md5, callerid, data, shared)
+                return
             if len(subs) == 1:
                 sub = subs[0]
                 if raw and sub.raw and (sub.md5 == md5 or sub.md5 == "*"):  # a recorder
@@ -585,6 +686,7 @@ class ZenohTransport:
         callerid: str,
         data: bytes,
         decoded: dict[str, Any],
+        latching: bool = False,
     ) -> None:
         if sub.md5 not in ("*", md5):
             warn_key = (sub.node.name, sub.topic, md5)
@@ -600,7 +702,9 @@ class ZenohTransport:
             raw = decoded.get("")
             if raw is None:
                 bus = sub.node.bus
-                raw = RawMessage(data, type_name, md5, bus.clock.now_ns(), callerid, sub.topic)
+                raw = RawMessage(
+                    data, type_name, md5, bus.clock.now_ns(), callerid, sub.topic, latching
+                )
                 decoded[""] = raw
             sub.deliver(raw, callerid)
             return

@@ -53,6 +53,7 @@ COMMANDS: dict[str, str] = {
     "teleop": "drive a turtle or a robot from the keyboard",
     # simulation (Experiment 6, Additional Experiment 1)
     "sim": "run the physics simulation server with the Gazebo ROS API (gzserver)",
+    "world": "build a world from a floor plan (Gazebo's building editor); list shipped worlds",
     # visualisation (Experiment 3, and every later lab)
     "rviz": "show markers, tf, robot models, scans and maps in the browser (rviz)",
     # frames (Experiment 4)

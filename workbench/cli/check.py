@@ -1,4 +1,9 @@
-"""``workbench check FILE``: check_urdf's tree report plus workbench's own findings."""
+"""``workbench check FILE``: check_urdf's report plus workbench's own findings.
+
+stdout is check_urdf's stdout (the tree, or nothing when ROS's parser refuses the
+file) followed by workbench's findings; stderr carries urdfdom's ``Error:`` and
+``Warning:`` lines as check_urdf prints them.
+"""
 
 from __future__ import annotations
 
@@ -60,6 +65,11 @@ def check(file: str, *, as_json: bool = False, load: bool = True) -> int:
     if as_json:
         print(json.dumps(report.to_dict(), indent=2))
     else:
+        # check_urdf's stderr (urdfdom's log), then its stdout followed by the findings.
+        if report.ros_messages:
+            sys.stdout.flush()
+            sys.stderr.write("".join(line + "\n" for line in report.ros_messages))
+            sys.stderr.flush()
         sys.stdout.write(report.format(_display_path(file, report.path)))
     return 0 if report.ok else 1
 
@@ -82,5 +92,6 @@ def _unreadable(file: str, error) -> dict:
         "robot": None,
         "root": None,
         "tree": [],
+        "urdfdom": [],
         "findings": [finding],
     }

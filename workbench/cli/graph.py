@@ -41,12 +41,11 @@ def graph(file: str, *, fmt: str | None = None, output: str | None = None) -> in
     from pathlib import Path
 
     from workbench.errors import ModelError
-    from workbench.model.graph import write_graph
-    from workbench.model.loader import load_document
+    from workbench.model.graph import read_graph_document, write_graph
 
     if fmt is not None and fmt not in FORMATS:
         raise ModelError(f"unknown format '{fmt}'", hint=f"use one of {', '.join(FORMATS)}")
-    document = load_document(file)
+    document = read_graph_document(file)
     if output:
         out = Path(output)
         if out.suffix == ".gv":

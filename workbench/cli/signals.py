@@ -9,9 +9,9 @@ and SIGTERM raises :class:`Terminated` (a ``KeyboardInterrupt`` too), so every
 (closing a bag, writing an ``--html`` snapshot, stopping a launcher's
 children) runs on SIGTERM as well. Only the first signal interrupts; later ones
 are ignored, so finalising is not cut short (SIGKILL still ends the process at
-once), and reported when they come a second or more after the first (a launched
-node gets Ctrl-C twice at once, from the terminal and from its launcher, as
-under roslaunch).
+once), and reported when they come a second or more after the first; a node
+started by ``workbench launch`` (``WORKBENCH_LAUNCHED=1``) gets Ctrl-C twice, from
+the terminal and from its launcher, as under roslaunch, and reports neither.
 
 A command stopped by a signal exits with ``128 + signal number``: 130 for
 SIGINT and 143 for SIGTERM, as a shell reports a process killed by them.
@@ -52,7 +52,8 @@ class StopRequest:
     def note(self, signum: int) -> bool:
         """Record ``signum``; True when it is the first stop signal."""
         if self.signum is not None:
-            if time.monotonic() - self.first_at >= REPEAT_QUIET_SECONDS:
+            launched = os.environ.get("WORKBENCH_LAUNCHED") == "1"
+            if not launched and time.monotonic() - self.first_at >= REPEAT_QUIET_SECONDS:
                 os.write(2, b"workbench: already stopping, please wait (SIGKILL forces it)\n")
             return False
         self.signum = signum

@@ -1,11 +1,13 @@
 """``check_urdf`` and more: the tree report plus workbench's own findings.
 
-:func:`check_robot` reads a description, prints the tree the way ROS's
-``check_urdf`` does, and then looks for what makes a model fail later in a
-simulator or planner: missing or invalid inertia, links without collision
-geometry, joints without limits, bad axes, undefined materials, missing
-meshes, broken trees. It finally loads the model into Drake and reports what
-Drake refuses.
+:func:`check_robot` reads a description and reports what ROS's ``check_urdf``
+prints: urdfdom's log lines (``report.ros_messages``, stderr) and the tree, or
+no tree when urdfdom refuses the file (:mod:`workbench.model.urdfdom`). It then
+looks for what makes a model fail later in a simulator or planner: missing or
+invalid inertia, links without collision geometry, joints without limits, bad
+axes, shape sizes, undefined materials, missing meshes, broken trees, and
+everything urdfdom logs as an error. Only a model without errors is finally
+loaded into Drake, whose refusals are reported too.
 """
 
 from __future__ import annotations
@@ -18,9 +20,18 @@ from pathlib import Path
 from workbench.errors import ModelError
 from workbench.model.description import RobotDescription
 from workbench.model.findings import Finding
-from workbench.model.rules import geometry_findings, inertia_findings, joint_findings, mesh_findings
+from workbench.model.packages import PackageResolver
+from workbench.model.rules import (
+    geometry_findings,
+    inertia_findings,
+    joint_findings,
+    mesh_findings,
+    urdfdom_findings,
+)
+from workbench.model.sources import read_description, resolve_robot_path
 from workbench.model.tree import KinematicTree, build_tree
-from workbench.model.urdf_xml import UrdfDocument
+from workbench.model.urdf_xml import UrdfDocument, parse_urdf_text
+from workbench.model.urdfdom_reader import read_ros_model
 
 PARSED_BANNER = "---------- Successfully Parsed XML ---------------"
 
@@ -33,9 +44,12 @@ class CheckReport:
         path: The file checked.
         robot_name: The robot's name.
         root: The root link, None when the links do not form one tree.
-        tree_lines: The ``check_urdf`` lines (name, banner, root, indented children).
+        tree_lines: ``check_urdf``'s stdout lines (name, banner, root, indented children);
+            empty when urdfdom refuses the file, as check_urdf then prints nothing there.
         findings: Errors and warnings, errors first, then in file order.
         loaded: Whether Drake loaded the model.
+        ros_messages: The lines ``check_urdf`` prints on stderr (urdfdom's log), without
+            console_bridge's second line naming urdfdom's C++ source.
     """
 
     path: Path
@@ -44,6 +58,7 @@ class CheckReport:
     tree_lines: list[str]
     findings: list[Finding] = field(default_factory=list)
     loaded: bool = False
+    ros_messages: list[str] = field(default_factory=list)
 
     @property
     def errors(self) -> list[Finding]:
@@ -59,10 +74,11 @@ class CheckReport:
         return not self.errors
 
     def format(self, display_path: str | None = None) -> str:
-        """The text report: the tree as ``check_urdf`` prints it, then the findings."""
+        """The stdout report: exactly ``check_urdf``'s stdout, then workbench's findings."""
         shown = display_path or str(self.path)
         lines = list(self.tree_lines)
-        lines.append("")
+        if lines:
+            lines.append("")
         counts = f"{len(self.errors)} error(s), {len(self.warnings)} warning(s)"
         if self.findings:
             lines.append(f"workbench found {counts}:")
@@ -88,6 +104,7 @@ class CheckReport:
             "errors": len(self.errors),
             "warnings": len(self.warnings),
             "tree": self.tree_lines,
+            "urdfdom": self.ros_messages,
             "findings": [finding.to_dict() for finding in self.findings],
         }
 
@@ -153,17 +170,26 @@ def _load_findings(
 def check_document(
     document: UrdfDocument, *, load: bool = True, description: RobotDescription | None = None
 ) -> CheckReport:
-    """Check a parsed URDF (see :func:`check_robot`); ``description`` saves Drake's load a re-read."""
+    """Check a parsed URDF (see :func:`check_robot`); ``description`` saves Drake's load a re-read.
+
+    ``document`` may come from a tolerant read (``parse_urdf_text(..., strict=False)``):
+    the elements it skipped are reported as errors.
+    """
     tree = build_tree(document)
-    lines = [f"robot name is: {document.name}"]
-    if tree.root is not None and not tree.problems:
-        lines = tree_lines(document.name, tree.root, tree)
-    report = CheckReport(document.path or Path("<string>"), document.name, tree.root, lines)
-    findings = list(tree.problems)
+    ros = read_ros_model(document.root)
+    report = CheckReport(
+        document.path or Path("<string>"),
+        document.name,
+        tree.root,
+        ros.tree_lines(),
+        ros_messages=ros.stderr_lines(),
+    )
+    findings = list(document.problems) + list(tree.problems)
     findings += inertia_findings(document, tree) if not tree.problems else []
     findings += joint_findings(document)
     findings += geometry_findings(document)
     findings += mesh_findings(document)
+    findings += urdfdom_findings(ros, findings)
     # Drake is asked only about models workbench finds no error in: it reports the
     # first problem only, and aborts the process on some (reversed joint limits).
     if load and document.path is not None and not any(f.severity == "error" for f in findings):
@@ -177,6 +203,10 @@ def check_document(
 def check_robot(source: str | os.PathLike[str], *, load: bool = True) -> CheckReport:
     """Check a description file the way ``check_urdf`` does, and much more.
 
+    A malformed ``<visual>``, ``<collision>`` or ``<inertial>`` does not stop the
+    check: ROS's parser skips it and prints the tree, and so does this report,
+    with the element as an error below it.
+
     Args:
         source: A path (URDF, SDF or xacro) or a name from ``urdf/``.
         load: Also load the model into Drake and report what Drake refuses.
@@ -186,13 +216,23 @@ def check_robot(source: str | os.PathLike[str], *, load: bool = True) -> CheckRe
 
     Raises:
         ModelError: The file cannot be found, read or parsed at all (not XML,
-            empty, no ``<robot>``, bad numbers, failing xacro).
+            empty, no ``<robot>``, bad joints, failing xacro).
     """
-    description = RobotDescription.load(source)
-    if description.document is None:
-        return _check_sdf(description)
-    report = check_document(description.document, load=load, description=description)
-    if description.expanded:
+    path = resolve_robot_path(source)
+    text = read_description(path)
+    if text.format != "urdf":
+        return _check_sdf(RobotDescription.load(path))
+    document = parse_urdf_text(text.text, path, strict=False)
+    description = RobotDescription(
+        path=path,
+        format="urdf",
+        text=text.text,
+        expanded=text.expanded,
+        document=document,
+        packages=PackageResolver(path),
+    )
+    report = check_document(document, load=load, description=description)
+    if text.expanded:
         # Line numbers would point into xacro's output, not into the file the user edits.
         report.findings = [replace(finding, line=None) for finding in report.findings]
     return report

@@ -1,8 +1,11 @@
 """``urdf_to_graphviz``: the link/joint tree as a graphviz graph.
 
 Links are boxes, joints blue ellipses, and each parent-link -> joint edge
-carries the joint origin (``xyz`` in metres, ``rpy`` in radians), exactly
-as ROS's ``urdf_to_graphviz`` writes its ``.gv`` file.
+carries the joint origin (``xyz`` in metres, ``rpy`` in radians). The ``.gv``
+text is byte for byte what ROS's ``urdf_to_graphviz`` writes: the tree and
+numbers are urdfdom's (:mod:`workbench.model.urdfdom`), so rpy is printed back
+from the quaternion urdfdom keeps (``-4.71239`` reads ``1.5708``) and ``-0``
+keeps its sign.
 """
 
 from __future__ import annotations
@@ -14,8 +17,11 @@ from pathlib import Path
 import pydot
 
 from workbench.errors import ModelError
-from workbench.model.tree import KinematicTree, checked_tree
-from workbench.model.urdf_xml import UrdfDocument
+from workbench.model.sources import read_description, resolve_robot_path
+from workbench.model.tree import build_tree, checked_tree
+from workbench.model.urdf_xml import UrdfDocument, UrdfSyntaxError, parse_urdf_text
+from workbench.model.urdfdom import RosJoint, RosModel, cpp_double
+from workbench.model.urdfdom_reader import read_ros_model
 from workbench.optional import require_program
 
 FORMATS = ("pdf", "svg", "png")
@@ -43,66 +49,62 @@ class RobotGraph(pydot.Dot):
         return self.source
 
 
-def _number(value: float) -> str:
-    # C++ ostream's default formatting (6 significant digits), without "-0".
-    text = f"{value:g}"
-    return "0" if text == "-0" else text
+def ros_tree(document: UrdfDocument) -> RosModel:
+    """urdfdom's tree of ``document``, which urdf_to_graphviz draws.
 
-
-def _ordered_children(tree: KinematicTree) -> dict:
-    return {link: sorted(joints, key=lambda j: j.name) for link, joints in tree.children.items()}
+    Raises:
+        ModelError: ROS's parser refuses the file, or its tree never ends (a loop
+            below the root); the message names the element and what to do.
+    """
+    ros = read_ros_model(document.root)
+    if ros.printable:
+        return ros
+    if build_tree(document).problems:
+        checked_tree(document)  # raises workbench's explanation of the broken tree
+    errors = [message for message in ros.messages if message.level == "Error"]
+    if not errors:
+        raise ModelError("ROS's URDF parser cannot walk this tree", path=document.path)
+    cause = next(message for message in errors if message.element == errors[-1].element)
+    raise ModelError(
+        f"{cause.element}: ROS's URDF parser refuses the file: {cause.one_line}",
+        path=document.path,
+        line=cause.line,
+        hint="fix that element; 'workbench check' lists every problem",
+    )
 
 
 def graph_source(document: UrdfDocument) -> str:
-    """The ``.gv`` text of ``document`` (children ordered by joint name, as urdfdom does)."""
-    root, tree = checked_tree(document)
-    children = _ordered_children(tree)
-    lines = ["digraph G {", "node [shape=box];"]
-
-    def links(link: str) -> None:
-        lines.append(f'"{link}" [label="{link}"];')
-        for joint in children.get(link, []):
-            links(joint.child)
-
-    def joints(link: str) -> None:
-        for joint in children.get(link, []):
-            xyz = " ".join(_number(v) for v in joint.xyz)
-            rpy = " ".join(_number(v) for v in joint.rpy)
-            lines.append(f'"{link}" -> "{joint.name}" [label="xyz: {xyz} \\nrpy: {rpy}"]')
-            lines.append(f'"{joint.name}" -> "{joint.child}"')
-            joints(joint.child)
-
-    links(root)
-    lines.append("node [shape=ellipse, color=blue, fontcolor=blue];")
-    joints(root)
-    lines.append("}")
-    return "\n".join(lines) + "\n"
+    """The ``.gv`` text of ``document``, byte for byte what urdf_to_graphviz writes."""
+    return ros_tree(document).graph_source()
 
 
 def robot_graph(document: UrdfDocument) -> RobotGraph:
     """A :class:`RobotGraph` (pydot) of ``document``."""
-    root, tree = checked_tree(document)
-    children = _ordered_children(tree)
+    ros = ros_tree(document)
     graph = RobotGraph("G", graph_type="digraph")
-    graph.source = graph_source(document)
+    graph.source = ros.graph_source()
     graph.robot_name = document.name
-    order: list[str] = []
+    assert ros.root is not None  # ros_tree returns printable trees only
+    order = [ros.root]
+    joints: list[RosJoint] = []
 
     def walk(link: str) -> None:
-        order.append(link)
-        for joint in children.get(link, []):
+        for joint in ros.children.get(link, []):
+            order.append(joint.child)
+            joints.append(joint)
             walk(joint.child)
 
-    walk(root)
+    walk(ros.root)
     for link in order:
         graph.add_node(pydot.Node(link, label=link, shape="box"))
-    for link in order:
-        for joint in children.get(link, []):
-            graph.add_node(pydot.Node(joint.name, shape="ellipse", color="blue", fontcolor="blue"))
-            xyz = " ".join(_number(v) for v in joint.xyz)
-            rpy = " ".join(_number(v) for v in joint.rpy)
-            graph.add_edge(pydot.Edge(link, joint.name, label=f"xyz: {xyz} \\nrpy: {rpy}"))
-            graph.add_edge(pydot.Edge(joint.name, joint.child))
+    parent_joints = ros.parent_joints()
+    for joint in joints:
+        shown = parent_joints[joint.child]  # as in the .gv, see RosModel.graph_source
+        graph.add_node(pydot.Node(shown.name, shape="ellipse", color="blue", fontcolor="blue"))
+        xyz = " ".join(cpp_double(v) for v in shown.xyz)
+        rpy = " ".join(cpp_double(v) for v in shown.rpy)
+        graph.add_edge(pydot.Edge(joint.parent, shown.name, label=f"xyz: {xyz} \\nrpy: {rpy}"))
+        graph.add_edge(pydot.Edge(shown.name, joint.child))
     return graph
 
 
@@ -150,3 +152,19 @@ def write_graph(
     except OSError as error:
         raise ModelError(f"cannot write the graph: {error.strerror}", path=error.filename) from None
     return written
+
+
+def read_graph_document(source: str | os.PathLike[str]) -> UrdfDocument:
+    """Find and read a URDF (or xacro) for drawing, as urdf_to_graphviz reads it.
+
+    Malformed shapes or inertia do not matter to the graph (ROS's parser skips
+    them too), so they are not errors here; ``workbench check`` reports them.
+
+    Raises:
+        ModelError: Not found, unreadable, SDF, or not a readable URDF.
+    """
+    path = resolve_robot_path(source)
+    text = read_description(path)
+    if text.format != "urdf":
+        raise UrdfSyntaxError("this is an SDF file; only URDF can be drawn", path=path)
+    return parse_urdf_text(text.text, path, strict=False)

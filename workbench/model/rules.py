@@ -1,9 +1,9 @@
 """The rules ``workbench check`` applies to a URDF, each returning findings.
 
 Physics (mass and inertia of moving links), joints (limits, axes), looks
-(collision geometry, materials) and files (meshes, packages). The tree
-problems (roots, loops, dangling links, duplicates) come from
-:mod:`workbench.model.tree`.
+(collision geometry, materials), files (meshes, packages) and what ROS's
+parser refuses. The tree problems (roots, loops, dangling links, duplicates)
+come from :mod:`workbench.model.tree`.
 """
 
 from __future__ import annotations
@@ -18,8 +18,22 @@ from workbench.model.meshes import check_mesh
 from workbench.model.packages import PackageResolver
 from workbench.model.tree import KinematicTree
 from workbench.model.urdf_xml import UrdfDocument
+from workbench.model.urdfdom import RosModel
 
 _TOLERANCE = 1e-9
+
+#: The codes of :func:`workbench.model.tree.build_tree`'s findings.
+TREE_CODES = frozenset(
+    (
+        "duplicate-link",
+        "duplicate-joint",
+        "no-links",
+        "undefined-link",
+        "loop",
+        "two-parents",
+        "multiple-roots",
+    )
+)
 
 
 def _moving_links(document: UrdfDocument, tree: KinematicTree) -> dict[str, str]:
@@ -35,6 +49,13 @@ def _moving_links(document: UrdfDocument, tree: KinematicTree) -> dict[str, str]
                 break
             name = joint.parent
     return moving
+
+
+def _moves_itself(link: str, tree: KinematicTree) -> bool:
+    """Whether ``link`` hangs on a movable joint of its own (a massless link welded to its
+    parent, such as a tool frame, merges into the parent: ROS and Drake accept it)."""
+    joint = tree.parent_joint.get(link)
+    return joint is not None and joint.type != "fixed"
 
 
 def inertia_findings(document: UrdfDocument, tree: KinematicTree) -> list[Finding]:
@@ -68,7 +89,7 @@ def inertia_findings(document: UrdfDocument, tree: KinematicTree) -> list[Findin
                     inertial.line,
                 )
             )
-        elif inertial.mass <= 0:
+        elif inertial.mass < 0 or (inertial.mass == 0 and _moves_itself(link.name, tree)):
             findings.append(
                 Finding(
                     "error",
@@ -95,7 +116,7 @@ def inertia_findings(document: UrdfDocument, tree: KinematicTree) -> list[Findin
         moments = np.linalg.eigvalsh(inertial.inertia)
         scale = max(float(np.abs(moments).max()), 1e-300)
         if np.allclose(inertial.inertia, 0.0):
-            if link.name in moving:
+            if _moves_itself(link.name, tree):
                 findings.append(
                     Finding(
                         "warning",
@@ -301,4 +322,47 @@ def mesh_findings(document: UrdfDocument) -> list[Finding]:
             findings.append(
                 Finding("error", code, what, error.message, error.hint or "", mesh.sourceline)
             )
+    return findings
+
+
+def urdfdom_findings(ros: RosModel, existing: list[Finding]) -> list[Finding]:
+    """An error for each element urdfdom logs an error about that no other finding explains.
+
+    Every element ROS's parser skips or refuses is then an error of the report, also
+    where workbench itself would read it (a number with trailing spaces, a robot-level
+    material without colour, a ``<mimic>`` without joint, a ``version`` other than 1.0).
+    """
+    explained = {finding.element for finding in existing if finding.severity == "error"}
+    broken_tree = any(finding.code in TREE_CODES for finding in existing)
+    findings: list[Finding] = []
+    for message in ros.messages:
+        if message.level != "Error" or message.element in explained:
+            continue
+        if message.tree and broken_tree:
+            continue  # workbench's tree findings say what is wrong, and where
+        explained.add(message.element)
+        refused = ros.refused and any(
+            later.element == message.element for later in ros.messages[-1:]
+        )
+        verb = "refuses the file" if refused else "skips part of it"
+        findings.append(
+            Finding(
+                "error",
+                "urdfdom-refuses" if refused else "urdfdom-error",
+                message.element,
+                f"ROS's URDF parser {verb}: {message.one_line}",
+                "fix this element so that ROS reads the robot as you wrote it",
+                message.line,
+            )
+        )
+    if ros.endless is not None and not any(f.severity == "error" for f in existing + findings):
+        findings.append(
+            Finding(
+                "error",
+                "loop",
+                f"link '{ros.endless}'",
+                "is reached again below itself; ROS's tools recurse until they crash",
+                "URDF describes trees; break the loop by removing a joint",
+            )
+        )
     return findings

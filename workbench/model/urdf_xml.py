@@ -10,6 +10,7 @@ model can get *wrong* while still being readable is left to
 
 from __future__ import annotations
 
+import contextlib
 import math
 import re
 from dataclasses import dataclass, field
@@ -20,6 +21,7 @@ from lxml import etree
 
 from workbench import spatial
 from workbench.errors import ModelError
+from workbench.model.findings import Finding
 from workbench.model.info import JointInfo, LinkInfo
 
 JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
@@ -27,6 +29,10 @@ JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "plan
 
 class UrdfSyntaxError(ModelError):
     """The file is not a readable URDF (bad XML, missing names, bad numbers)."""
+
+
+class _Dropped(Exception):
+    """A malformed element inside a link, skipped when reading tolerantly."""
 
 
 @dataclass
@@ -111,7 +117,11 @@ class Material:
 
 @dataclass
 class UrdfDocument:
-    """Everything workbench reads from one URDF file."""
+    """Everything workbench reads from one URDF file.
+
+    ``problems`` lists the malformed elements inside links that a tolerant read
+    (``parse_urdf_text(..., strict=False)``) skipped, as ROS's parser skips them.
+    """
 
     path: Path | None
     name: str
@@ -120,6 +130,7 @@ class UrdfDocument:
     materials: dict[str, Material]
     root: etree._Element
     duplicate_materials: list[Material] = field(default_factory=list)
+    problems: list[Finding] = field(default_factory=list)
 
     def link(self, name: str) -> Link | None:
         return next((link for link in self.links if link.name == name), None)
@@ -148,12 +159,40 @@ class UrdfDocument:
 
 
 class _Reader:
-    def __init__(self, path: Path | None) -> None:
+    def __init__(self, path: Path | None, strict: bool = True) -> None:
         self.path = path
+        self.strict = strict
+        self.problems: list[Finding] = []
+        self.link_label: str | None = None  # set while reading the inside of a link
 
     def fail(self, message: str, element: etree._Element | None, hint: str | None = None):
+        """Raise :class:`UrdfSyntaxError`; inside a link when tolerant, record and drop instead."""
         line = element.sourceline if element is not None else None
-        raise UrdfSyntaxError(message, path=self.path, line=line, hint=hint)
+        if self.strict or self.link_label is None:
+            raise UrdfSyntaxError(message, path=self.path, line=line, hint=hint)
+        label = self.link_label
+        if hint is None:
+            hint = (
+                "ROS's parser skips this element and the rest of the link; fix it"
+                if label.startswith("link")
+                else "ROS's parser ignores this colour; fix it"
+            )
+        problem = Finding(
+            "error", "malformed-element", label, message.removeprefix(label).strip(), hint, line
+        )
+        self.problems.append(problem)
+        raise _Dropped(message)
+
+    def positive(self, element, what: str, values: dict[str, float], zero_ok: bool = False):
+        """Sizes Drake accepts (it aborts the process on others): finite and above zero."""
+        for key, value in values.items():
+            if not math.isfinite(value) or value < 0 or (value == 0 and not zero_ok):
+                bound = "zero or more" if zero_ok else "more than zero"
+                self.fail(
+                    f"{what}: {key} {value:g} must be {bound}",
+                    element,
+                    hint="give the shape's real size in metres",
+                )
 
     def floats(self, element, attribute: str, count: int | None, what: str, default=None):
         text = element.get(attribute)
@@ -206,18 +245,29 @@ class _Reader:
         kind = child.tag
         where = f"{what} <{kind}>"
         if kind == "box":
-            return Geometry(kind, child.sourceline, self.floats(child, "size", 3, where))
+            size = self.floats(child, "size", 3, where)
+            self.positive(child, where, dict(zip(("width", "depth", "height"), size, strict=True)))
+            return Geometry(kind, child.sourceline, size)
         if kind in ("cylinder", "capsule"):
             radius = self.floats(child, "radius", 1, where)[0]
             length = self.floats(child, "length", 1, where)[0]
+            self.positive(child, where, {"radius": radius, "length": length})
             return Geometry(kind, child.sourceline, (radius, length))
         if kind == "sphere":
-            return Geometry(kind, child.sourceline, self.floats(child, "radius", 1, where))
+            radius = self.floats(child, "radius", 1, where)
+            self.positive(child, where, {"radius": radius[0]}, zero_ok=True)
+            return Geometry(kind, child.sourceline, radius)
         if kind == "mesh":
             filename = child.get("filename")
             if not filename:
                 self.fail(f"{where} has no 'filename' attribute", child)
             scale = self.floats(child, "scale", 3, where, default=(1.0, 1.0, 1.0))
+            if any(not math.isfinite(value) or abs(value) < 1e-8 for value in scale):
+                self.fail(
+                    f'{where}: scale="{child.get("scale")}" has a zero component',
+                    child,
+                    hint="scale every axis by a non-zero factor",
+                )
             return Geometry(kind, child.sourceline, (), filename, scale)
         self.fail(
             f"{what}: unknown geometry <{kind}>",
@@ -266,13 +316,22 @@ class _Reader:
             self.fail("<link> has no name", element, hint='add name="..."')
         what = f"link '{name}'"
         link = Link(name, element.sourceline)
-        for index, visual in enumerate(element.iterchildren("visual")):
-            link.visuals.append(self.shape(visual, f"{what} <visual> #{index + 1}"))
-        for index, collision in enumerate(element.iterchildren("collision")):
-            link.collisions.append(self.shape(collision, f"{what} <collision> #{index + 1}"))
-        inertial = element.find("inertial")
-        if inertial is not None:
-            link.inertial = self.inertial(inertial, what)
+        self.link_label = what
+        try:
+            for index, visual in enumerate(element.iterchildren("visual")):
+                with contextlib.suppress(_Dropped):
+                    link.visuals.append(self.shape(visual, f"{what} <visual> #{index + 1}"))
+            for index, collision in enumerate(element.iterchildren("collision")):
+                with contextlib.suppress(_Dropped):
+                    link.collisions.append(
+                        self.shape(collision, f"{what} <collision> #{index + 1}")
+                    )
+            inertial = element.find("inertial")
+            if inertial is not None:
+                with contextlib.suppress(_Dropped):
+                    link.inertial = self.inertial(inertial, what)
+        finally:
+            self.link_label = None
         return link
 
     def joint(self, element) -> JointInfo:
@@ -300,7 +359,8 @@ class _Reader:
         xyz, rpy = self.origin(element, what)
         axis = np.array([1.0, 0.0, 0.0])
         axis_element = element.find("axis")
-        if axis_element is not None:
+        # A fixed or floating joint has no axis: ROS never reads it.
+        if axis_element is not None and kind not in ("fixed", "floating"):
             axis = np.array(self.floats(axis_element, "xyz", 3, f"{what} <axis>", (1.0, 0.0, 0.0)))
         limits: dict[str, float | None] = dict.fromkeys(("lower", "upper", "velocity", "effort"))
         limit = element.find("limit")
@@ -327,24 +387,130 @@ class _Reader:
         )
 
 
-def parse_urdf_text(text: str | bytes, path: Path | None = None) -> UrdfDocument:
+_DECLARATION_START = re.compile(rb"<\?xml[\s?]")
+_STANDARD_DECLARATION = re.compile(rb"<\?xml\s+version\s*=\s*[\"']1\.[0-9]+[\"']")
+
+
+def _lenient_prolog(data: bytes) -> tuple[bytes, int]:
+    """Blank the XML declarations lxml refuses but ROS's parser (TinyXML) reads past.
+
+    A declaration after a comment, or with a version other than 1.x (PyBullet's
+    URDFs begin ``<?xml version="0.0"?>``), is replaced by spaces before the
+    first element; newlines are kept, so line numbers stay those of the file.
+
+    Returns:
+        The text, and where its first element (or doctype) starts.
+    """
+    index = 3 if data.startswith(b"\xef\xbb\xbf") else 0
+    while index < len(data):
+        while index < len(data) and data[index : index + 1].isspace():
+            index += 1
+        if data.startswith(b"<!--", index):
+            end = data.find(b"-->", index + 4)
+            index = len(data) if end < 0 else end + 3
+        elif _DECLARATION_START.match(data, index):
+            end = data.find(b"?>", index)
+            if end < 0:
+                break
+            end += 2
+            at_start = index == (3 if data.startswith(b"\xef\xbb\xbf") else 0)
+            if not (at_start and _STANDARD_DECLARATION.match(data, index)):
+                blank = bytes(b if b in b"\r\n" else 32 for b in data[index:end])
+                data = data[:index] + blank + data[end:]
+            index = end
+        elif data.startswith(b"<?", index):
+            end = data.find(b"?>", index)
+            index = len(data) if end < 0 else end + 2
+        else:
+            break
+    return data, index
+
+
+_START_TAG = re.compile(
+    rb"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<[?!][^>]*>"
+    rb"|<[A-Za-z_:][^\s/>]*(?:\s+[^\s=/>]+\s*=\s*(?:\"[^\"]*\"|'[^']*'))*\s*/?>",
+    re.DOTALL,
+)
+_ATTRIBUTE_VALUE = re.compile(rb"\"[^\"]*\"|'[^']*'")
+
+
+def _keep_attribute_whitespace(data: bytes) -> bytes:
+    """Keep tabs and line breaks inside attribute values, as ROS's parser does.
+
+    An XML parser turns them into spaces, so ``xyz="0<newline>0 1"`` would read
+    as three numbers where ROS finds "0<newline>0" and refuses the joint. They
+    become character references (which XML keeps), and each line break moves
+    just behind the value, so line numbers stay those of the file.
+    """
+
+    def value(match: re.Match[bytes]) -> bytes:
+        text = match.group()
+        if not any(c in text for c in b"\t\n\r"):
+            return text
+        kept = text.replace(b"\t", b"&#9;").replace(b"\r", b"&#13;").replace(b"\n", b"&#10;")
+        return kept + b"\n" * text.count(b"\n")
+
+    def tag(match: re.Match[bytes]) -> bytes:
+        text = match.group()
+        if text.startswith((b"<!", b"<?")):
+            return text
+        return _ATTRIBUTE_VALUE.sub(value, text)
+
+    return _START_TAG.sub(tag, data)
+
+
+_UNDECLARED = re.compile(r"Namespace prefix ([A-Za-z_][\w.-]*) (?:on|for) ")
+_ROOT_TAG = re.compile(rb"<[^\s/>?!]+")
+
+
+def _parse_xml(data: bytes, start: int, parser: etree.XMLParser) -> etree._Element:
+    """Parse the XML; prefixes never declared (``<sensor:camera>``) are declared on the root.
+
+    ROS's parser does not know namespaces, so old URDFs with Gazebo's undeclared
+    ``sensor:`` or ``controller:`` tags load in ROS; the tags keep their prefix here.
+    """
+    for _ in range(32):
+        try:
+            return etree.fromstring(data, parser)
+        except etree.XMLSyntaxError as error:
+            match = _UNDECLARED.match(str(error.msg or ""))
+            root = _ROOT_TAG.match(data, start)
+            if match is None or root is None:
+                raise
+            prefix = match.group(1).encode()
+            declaration = b' xmlns:%s="urn:undeclared:%s"' % (prefix, prefix)
+            data = data[: root.end()] + declaration + data[root.end() :]
+    return etree.fromstring(data, parser)
+
+
+def parse_urdf_text(
+    text: str | bytes, path: Path | None = None, *, strict: bool = True
+) -> UrdfDocument:
     """Parse URDF text into a :class:`UrdfDocument`.
 
     Args:
         text: The XML.
         path: The file it came from, used in error messages and to resolve meshes.
+        strict: Raise on the first malformed element. When False, a malformed
+            ``<visual>``, ``<collision>``, ``<inertial>`` or robot-level ``<material>``
+            is skipped and listed in ``document.problems``, as ROS's parser skips it;
+            everything else still raises.
 
     Raises:
-        UrdfSyntaxError: Empty text, bad XML, no ``<robot>``, missing names, bad numbers.
+        UrdfSyntaxError: Empty text, bad XML, no ``<robot>``, missing names, bad numbers,
+            shape sizes Drake cannot build.
     """
-    reader = _Reader(path)
+    reader = _Reader(path, strict)
     data = text.encode() if isinstance(text, str) else text
     if not data.strip():
         raise UrdfSyntaxError(
             "the file is empty", path=path, hint='a URDF starts with <robot name="...">'
         )
+    parser = etree.XMLParser(
+        remove_blank_text=False, huge_tree=True, resolve_entities=False, no_network=True
+    )
     try:
-        root = etree.fromstring(data, etree.XMLParser(remove_blank_text=False, huge_tree=True))
+        root = _parse_xml(*_lenient_prolog(_keep_attribute_whitespace(data)), parser)
     except etree.XMLSyntaxError as error:
         message = re.sub(r",? line \d+, column \d+", "", str(error.msg or error)).strip()
         raise UrdfSyntaxError(
@@ -366,14 +532,23 @@ def parse_urdf_text(text: str | bytes, path: Path | None = None) -> UrdfDocument
     materials: dict[str, Material] = {}
     duplicates: list[Material] = []
     for element in root.iterchildren("material"):
-        material_name = element.get("name")
-        if not material_name:
-            reader.fail("<material> has no name", element)
+        material_name = element.get("name") or ""
         texture = element.find("texture")
+        reader.link_label = f"material '{material_name}'"
+        try:
+            if not material_name:
+                reader.fail("<material> has no name", element, hint='add name="..."')
+            rgba = reader.rgba(element, f"material '{material_name}'")
+        except _Dropped:
+            if not material_name:
+                continue
+            rgba = None
+        finally:
+            reader.link_label = None
         material = Material(
             material_name,
             element.sourceline,
-            reader.rgba(element, f"material '{material_name}'"),
+            rgba,
             texture.get("filename") if texture is not None else None,
         )
         if material_name in materials:
@@ -389,14 +564,14 @@ def parse_urdf_text(text: str | bytes, path: Path | None = None) -> UrdfDocument
                 materials[shape.material] = Material(
                     shape.material, shape.material_line, shape.rgba
                 )
-    return UrdfDocument(path, name, links, joints, materials, root, duplicates)
+    return UrdfDocument(path, name, links, joints, materials, root, duplicates, reader.problems)
 
 
-def parse_urdf_file(path: str | Path) -> UrdfDocument:
+def parse_urdf_file(path: str | Path, *, strict: bool = True) -> UrdfDocument:
     """Read and parse a URDF file (see :func:`parse_urdf_text`)."""
     path = Path(path)
     try:
         data = path.read_bytes()
     except OSError as error:
         raise ModelError(f"cannot read the file: {error.strerror}", path=path) from None
-    return parse_urdf_text(data, path)
+    return parse_urdf_text(data, path, strict=strict)

@@ -30,6 +30,11 @@ class ModelHandle:
     def _world(self) -> Any:
         return self._server.world
 
+    @property
+    def server(self) -> SimServer:
+        """The server the model runs in (sensor plugins read its world)."""
+        return self._server
+
     def _context(self) -> Any:
         return self._world.plant.GetMyMutableContextFromRoot(self._world.context)
 

@@ -21,9 +21,10 @@ file must define exactly one plugin class (a subclass of :class:`Plugin`), or
 name it: ``my_plugin.py:MyPlugin``.
 
 ``update`` runs before every physics step, or every ``1 / update_rate`` seconds
-of simulated time when the class, ``load`` (on the instance) or the
-``<update_rate>`` parameter sets one.
-Joint efforts and link wrenches a plugin applies last until its next update.
+of simulated time when the class (or the ``<update_rate>`` parameter) sets one.
+A plugin may also set ``self.update_rate`` in ``load`` (a sensor plugin takes its
+sensor's ``<update_rate>``). Joint efforts and link wrenches a plugin applies
+last until its next update.
 A plugin that raises is reported with its file and line and disabled; the
 simulation keeps running.
 """
@@ -64,9 +65,25 @@ BUILTIN_PLUGINS: dict[str, str] = {
     ),
 }
 
+#: The sensor plugins (workbench.sim.sensors).
+BUILTIN_PLUGINS.update(
+    {
+        "libgazebo_ros_laser.so": "workbench.sim.sensors.laser_plugin:GazeboRosLaser",
+        "libgazebo_ros_gpu_laser.so": "workbench.sim.sensors.laser_plugin:GazeboRosLaser",
+        "libgazebo_ros_camera.so": "workbench.sim.sensors.camera_plugin:GazeboRosCamera",
+        "libgazebo_ros_openni_kinect.so": "workbench.sim.sensors.camera_plugin:GazeboRosOpenniKinect",
+        "libgazebo_ros_depth_camera.so": "workbench.sim.sensors.camera_plugin:GazeboRosDepthCamera",
+        "libgazebo_ros_imu_sensor.so": "workbench.sim.sensors.imu_plugin:GazeboRosImuSensor",
+    }
+)
+
 
 class UnavailablePluginError(SimulationError):
     """A Gazebo plugin library workbench does not provide: the model runs without it."""
+
+
+class PluginSetupError(SimulationError):
+    """A plugin refuses what it was given in ``load`` (one line; the model runs without it)."""
 
 
 @dataclass(frozen=True)
@@ -80,10 +97,12 @@ class UpdateInfo:
 class SdfElement:
     """The ``<plugin>`` element's parameters, read like Gazebo's ``sdf::Element``."""
 
-    def __init__(self, xml: str, sensor: str = "") -> None:
+    def __init__(self, xml: str, sensor: str = "", reference: str | None = None) -> None:
         self.element = etree.fromstring(xml.encode()) if xml.strip() else etree.Element("plugin")
         #: The enclosing ``<sensor>`` element of a sensor plugin (lxml), else None.
         self.sensor = etree.fromstring(sensor.encode()) if sensor.strip() else None
+        #: The link a sensor plugin's sensor is on (``PluginSpec.reference``), else None.
+        self.reference = reference
 
     @property
     def name(self) -> str:

@@ -34,6 +34,7 @@ from workbench.errors import SimulationError
 from workbench.sim.model_spec import PluginSpec, SimModel
 from workbench.sim.plugins import (
     Plugin,
+    PluginSetupError,
     SdfElement,
     UnavailablePluginError,
     UpdateInfo,
@@ -304,7 +305,12 @@ class SimServer:
             for warning in model.warnings:
                 _LOG.warning("%s", warning)
             self._after_rebuild()
+            from workbench.sim.sensors.check import check_sensors
+
+            bad = check_sensors(model)
             for spec in model.plugins:
+                if spec.sensor and spec.sensor in bad:
+                    continue  # the sensor's own error was logged; the model runs without it
                 self.load_plugin(spec, model.name)
 
         self.call(work)
@@ -362,7 +368,7 @@ class SimServer:
             _LOG.error("%s", error)
             return None
         plugin = cls()
-        sdf = SdfElement(spec.element, spec.sensor)
+        sdf = SdfElement(spec.element, spec.sensor, spec.reference)
         rate = sdf.get("update_rate", float(getattr(plugin, "update_rate", 0.0) or 0.0))
         period = 1.0 / rate if rate and rate > 0 else 0.0
         slot = _PluginSlot(plugin, spec, model, period, next_update=self.world.time)
@@ -384,12 +390,17 @@ class SimServer:
                         hint="attach it in a <model> or URDF <gazebo> block, or --plugin MODEL=FILE",
                     )
                 plugin.load(ModelHandle(self, model, slot), sdf, slot.node)  # type: ignore[attr-defined]
+        except PluginSetupError as error:  # a plugin's own one-line refusal
+            owner = f"model '{model}': " if model else ""
+            _LOG.error("%splugin '%s' not loaded: %s", owner, spec.name, error.one_line())
+            self._close_plugin(slot)
+            return None
         except Exception as error:  # noqa: BLE001 - a plugin's failure
             self._disable(slot, error, "load")
             return None
-        if not sdf.has("update_rate"):  # the plugin may set its rate in load
-            rate = float(getattr(plugin, "update_rate", 0.0) or 0.0)
-            slot.period = 1.0 / rate if rate > 0 else 0.0
+        own_rate = float(getattr(plugin, "update_rate", 0.0) or 0.0)
+        if not sdf.has("update_rate") and own_rate > 0:  # set by the plugin in load()
+            slot.period = 1.0 / own_rate
         self._plugins.append(slot)
         _LOG.info("loaded plugin '%s' (%s)", spec.name, spec.filename)
         return plugin

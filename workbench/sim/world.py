@@ -120,6 +120,7 @@ class World:
         self.gravity_vector = _gravity_vector(gravity)
         self.physics = dict(physics or {})
         self._ground_z = float(ground_z) if ground else None
+        self._renderers: list[str] = []
         self._robots: dict[str, _RobotEntry] = {}
         self._obstacles: list[_Obstacle] = []
         self._models: dict[str, PlacedModel] = {}
@@ -163,6 +164,8 @@ class World:
                 defaults.point_stiffness = self.physics["point_stiffness"]
             self.scene_graph.set_config(SceneGraphConfig(default_proximity_properties=defaults))
         self.plant.mutable_gravity_field().set_gravity_vector(self.gravity_vector)
+        for name in self._renderers:
+            self.scene_graph.AddRenderer(name, _render_engine())
 
     # --- construction ------------------------------------------------------------
 
@@ -340,6 +343,27 @@ class World:
         if isinstance(shape, Mesh) and not os.path.isfile(shape.filename):
             raise SimulationError(f"mesh file for '{name}' not found", path=shape.filename)
         self._add_obstacle(name, drake_shape(shape), X_WB, rgba)
+
+    @property
+    def renderers(self) -> list[str]:
+        """Names of the render engines the SceneGraph has (see :meth:`add_renderer`)."""
+        return list(self._renderers)
+
+    def add_renderer(self, name: str) -> None:
+        """Give the SceneGraph a Drake ``RenderEngineVtk`` called ``name``, for cameras.
+
+        It renders every visual geometry (Drake gives visuals the perception role)
+        and is added again whenever the diagram is rebuilt. A world without cameras
+        has none, so its physics step does not update a renderer. Adding a name
+        twice does nothing; a built world gets it at once (no rebuild).
+        """
+        if name in self._renderers:
+            return
+        self._renderers.append(name)
+        self.scene_graph.AddRenderer(name, _render_engine())
+        if self.context is not None:
+            scene_graph_context = self.scene_graph.GetMyMutableContextFromRoot(self.context)
+            self.scene_graph.AddRenderer(scene_graph_context, name, _render_engine())
 
     def build(self, meshcat: Any = None) -> None:
         """Finalize the plant, wire controllers, create the simulator (idempotent).
@@ -1050,6 +1074,12 @@ class World:
     def _require_built(self, what: str) -> None:
         if self.diagram is None:
             raise SimulationError(f"call build() before {what}")
+
+
+def _render_engine() -> Any:
+    from pydrake.geometry import MakeRenderEngineVtk, RenderEngineVtkParams
+
+    return MakeRenderEngineVtk(RenderEngineVtkParams())
 
 
 def _control_plant(robot: Any) -> Any:

@@ -1,0 +1,485 @@
+"""Building plans written as YAML or JSON, read into a checked :class:`BuildingPlan`.
+
+The format (lengths in m, angles in degrees; every key but the walls' ends is optional)::
+
+    name: house                      # default: the file's name
+    description: A house of five rooms.   # the world file's first comment line
+    thickness: 0.15                  # defaults for every wall
+    height: 2.5
+    colour: [0.85, 0.85, 0.8]        # r g b [a] in 0..1, '#d9d9cc', or a Gazebo name (Wood, Gazebo/Grey)
+    levels:                          # or just 'walls:' for a one-storey building
+      - name: ground
+        elevation: 0                 # where its walls stand
+        height: 2.5                  # its walls' default height
+        floor: false                 # a slab below the level: true (under its walls), false,
+                                     # or {min: [x, y], max: [x, y], thickness: 0.15, colour: ...};
+                                     # default: true above the ground, false on it
+        walls:
+          - name: south
+            start: [0, 0]
+            end: [10, 0]
+            thickness: 0.2
+            colour: Wood
+            doors:   [{name: front, at: 5, width: 0.9, height: 2.0}]     # at: centre, m from start
+            windows: [{at: 2, width: 1.2, height: 1.0, sill: 0.9}]
+          - name: outline            # a chain of walls; 'at' runs along the whole chain
+            points: [[0, 0], [4, 0], [4, 3]]
+            closed: false
+    stairs:
+      - {name: stairs, from: ground, to: first, start: [1, 1], direction: 90,
+         width: 1.0, length: 3.0, steps: 12}
+    furniture:
+      - {name: table, type: table, at: [2, 3], size: [1.2, 0.8, 0.75], yaw: 0, level: ground}
+      - {name: bin, type: cylinder, at: [4, 1], radius: 0.2, height: 0.6}
+      - {name: shelf, type: box, at: [6, 1], size: [0.4, 1.6, 1.8]}
+"""
+
+from __future__ import annotations
+
+import difflib
+import json
+import math
+import os
+from pathlib import Path
+from typing import Any
+
+from workbench.sim.building.plan import (
+    DEFAULT_DOOR_HEIGHT,
+    DEFAULT_HEIGHT,
+    DEFAULT_THICKNESS,
+    EPS,
+    FLOOR_COLOUR,
+    FURNITURE_COLOUR,
+    STAIRS_COLOUR,
+    WALL_COLOUR,
+    BuildingPlan,
+    Colour,
+    Floor,
+    Item,
+    Level,
+    Opening,
+    PlanError,
+    Point,
+    Stairs,
+    Wall,
+)
+
+_PLAN_KEYS = {
+    "name",
+    "description",
+    "thickness",
+    "height",
+    "colour",
+    "color",
+    "levels",
+    "walls",
+    "stairs",
+    "furniture",
+}
+_LEVEL_KEYS = {"name", "elevation", "height", "floor", "walls", "thickness", "colour", "color"}
+_WALL_KEYS = {
+    "name", "start", "end", "points", "closed", "thickness", "height", "colour", "color",
+    "doors", "windows",
+}  # fmt: skip
+_OPENING_KEYS = {"name", "at", "width", "height", "sill"}
+_FLOOR_KEYS = {"min", "max", "thickness", "colour", "color"}
+_STAIRS_KEYS = {
+    "name",
+    "from",
+    "to",
+    "start",
+    "direction",
+    "width",
+    "length",
+    "steps",
+    "colour",
+    "color",
+}
+_ITEM_KEYS = {"name", "type", "at", "size", "radius", "height", "yaw", "level", "colour", "color"}
+_ITEM_TYPES = ("box", "cylinder", "table")
+
+
+def load_plan(path: str | os.PathLike[str]) -> BuildingPlan:
+    """Read and check a plan file (``.yaml``, ``.yml`` or ``.json``).
+
+    Raises:
+        PlanError: The file is missing or not YAML/JSON, or the plan is wrong; one
+            line naming the file and the element.
+    """
+    file = Path(path)
+    try:
+        text = file.read_text()
+    except FileNotFoundError:
+        raise PlanError("plan file not found", path=file) from None
+    except (OSError, UnicodeDecodeError) as error:
+        raise PlanError(f"cannot read the plan file: {error}", path=file) from None
+    if file.suffix.lower() == ".json":
+        try:
+            doc = json.loads(text)
+        except json.JSONDecodeError as error:
+            raise PlanError(f"not JSON: {error.msg}", path=file, line=error.lineno) from None
+    else:
+        import yaml
+
+        try:
+            doc = yaml.safe_load(text)
+        except yaml.YAMLError as error:
+            mark = getattr(error, "problem_mark", None)
+            raise PlanError(
+                f"not YAML: {getattr(error, 'problem', None) or error}",
+                path=file,
+                line=mark.line + 1 if mark is not None else None,
+            ) from None
+    return plan_from_dict(doc, source=str(file), name=file.stem)
+
+
+def plan_from_dict(doc: Any, *, source: str | None = None, name: str = "building") -> BuildingPlan:
+    """A checked plan from the parsed YAML/JSON (see the module docstring for the keys).
+
+    Raises:
+        PlanError: A missing or unknown key, a wrong value, or a plan that fails
+            :meth:`BuildingPlan.validate`.
+    """
+    reader = _Reader(source)
+    if isinstance(doc, dict) and "image" in doc and "resolution" in doc:
+        raise reader.error(
+            "this is a map_server map, not a building plan",
+            hint="read it with plan_from_image (workbench world build MAP.yaml does)",
+        )
+    plan_doc = reader.mapping(doc, "the plan", _PLAN_KEYS)
+    plan = BuildingPlan(name=reader.text(plan_doc, "name", "the plan", name), source=source)
+    description = plan_doc.get("description", "")
+    if not isinstance(description, str):
+        raise reader.error(f"the plan: 'description' must be text, got {description!r}")
+    plan.description = " ".join(description.split())
+    defaults = {
+        "thickness": reader.number(plan_doc, "thickness", "the plan", DEFAULT_THICKNESS),
+        "height": reader.number(plan_doc, "height", "the plan", DEFAULT_HEIGHT),
+        "colour": reader.colour(plan_doc, "the plan", WALL_COLOUR),
+    }
+    if "levels" in plan_doc and "walls" in plan_doc:
+        raise reader.error("the plan has both 'levels' and 'walls'", "put the walls into a level")
+    if "levels" in plan_doc:
+        level_docs = reader.sequence(plan_doc["levels"], "'levels'")
+    else:
+        level_docs = [{"name": "ground", "walls": plan_doc.get("walls", [])}]
+    counter = [0]
+    for index, level_doc in enumerate(level_docs):
+        plan.levels.append(reader.level(level_doc, index, defaults, counter))
+    for index, stairs_doc in enumerate(reader.sequence(plan_doc.get("stairs", []), "'stairs'")):
+        plan.stairs.append(reader.stairs(stairs_doc, index))
+    first = plan.levels[0].name if plan.levels else "ground"
+    for index, item_doc in enumerate(reader.sequence(plan_doc.get("furniture", []), "'furniture'")):
+        plan.items.append(reader.item(item_doc, index, first))
+    for level in plan.levels:
+        if level.floor is not None and level.floor.high == (math.inf, math.inf):
+            level.floor = _floor_under_walls(level, level.floor, reader)
+    plan.validate()
+    return plan
+
+
+def _floor_under_walls(level: Level, floor: Floor, reader: _Reader) -> Floor:
+    """``floor: true``: the slab spans the level's walls (to their outer faces)."""
+    if not level.walls:
+        raise reader.error(f"level '{level.name}' has a floor but no walls to size it by")
+    xs = [x for w in level.walls for x in (w.start[0], w.end[0])]
+    ys = [y for w in level.walls for y in (w.start[1], w.end[1])]
+    pad = max(w.thickness for w in level.walls) / 2
+    return Floor(
+        (min(xs) - pad, min(ys) - pad),
+        (max(xs) + pad, max(ys) + pad),
+        floor.thickness,
+        floor.colour,
+    )
+
+
+class _Reader:
+    """Typed access to the parsed document, every mistake a one-line PlanError."""
+
+    def __init__(self, source: str | None) -> None:
+        self.source = source
+
+    def error(self, message: str, hint: str | None = None) -> PlanError:
+        return PlanError(message, path=self.source, hint=hint)
+
+    def mapping(self, value: Any, what: str, keys: set[str]) -> dict[str, Any]:
+        if not isinstance(value, dict):
+            raise self.error(f"{what} must be a mapping of keys to values, got {_kind(value)}")
+        for key in value:
+            if key not in keys:
+                close = difflib.get_close_matches(str(key), sorted(keys), n=1)
+                hint = (
+                    f"did you mean '{close[0]}'?" if close else "keys: " + ", ".join(sorted(keys))
+                )
+                raise self.error(f"{what}: unknown key '{key}'", hint)
+        return value
+
+    def sequence(self, value: Any, what: str) -> list[Any]:
+        if value is None:
+            return []
+        if not isinstance(value, list):
+            raise self.error(f"{what} must be a list, got {_kind(value)}")
+        return value
+
+    def number(
+        self, doc: dict[str, Any], key: str, what: str, default: float | None = None
+    ) -> float:
+        if key not in doc or doc[key] is None:
+            if default is None:
+                raise self.error(f"{what} needs '{key}'")
+            return default
+        value = doc[key]
+        if (
+            isinstance(value, bool)
+            or not isinstance(value, int | float)
+            or not math.isfinite(value)
+        ):
+            raise self.error(f"{what}: '{key}' must be a number, got {value!r}")
+        return float(value)
+
+    def text(self, doc: dict[str, Any], key: str, what: str, default: str) -> str:
+        value = doc.get(key, default)
+        if not isinstance(value, str | int) or isinstance(value, bool) or not str(value).strip():
+            raise self.error(f"{what}: '{key}' must be a name, got {value!r}")
+        return str(value).strip()
+
+    def point(self, value: Any, what: str) -> Point:
+        if (
+            not isinstance(value, list | tuple)
+            or len(value) != 2
+            or not all(isinstance(v, int | float) and not isinstance(v, bool) for v in value)
+            or not all(math.isfinite(v) for v in value)
+        ):
+            raise self.error(f"{what} must be a point [x, y] in m, got {value!r}")
+        return (float(value[0]), float(value[1]))
+
+    def colour(self, doc: dict[str, Any], what: str, default: Colour) -> Colour:
+        value = doc.get("colour", doc.get("color"))
+        if value is None:
+            return default
+        return parse_colour(value, what, self.source)
+
+    def level(self, doc: Any, index: int, defaults: dict[str, Any], counter: list[int]) -> Level:
+        what = f"level {index}"
+        doc = self.mapping(doc, what, _LEVEL_KEYS)
+        name = self.text(doc, "name", what, f"level_{index}")
+        what = f"level '{name}'"
+        elevation = self.number(doc, "elevation", what, 0.0)
+        own = {
+            "thickness": self.number(doc, "thickness", what, defaults["thickness"]),
+            "height": self.number(doc, "height", what, defaults["height"]),
+            "colour": self.colour(doc, what, defaults["colour"]),
+        }
+        level = Level(name=name, elevation=elevation)
+        level.floor = self.floor(doc.get("floor", elevation > EPS), what)
+        for wall_doc in self.sequence(doc.get("walls", []), f"{what}: 'walls'"):
+            level.walls += self.walls(wall_doc, counter[0], what, own)
+            counter[0] += 1
+        return level
+
+    def floor(self, value: Any, what: str) -> Floor | None:
+        if value is False or value is None:
+            return None
+        if value is True:
+            return Floor((-math.inf, -math.inf), (math.inf, math.inf))  # sized by the walls
+        doc = self.mapping(value, f"{what}: 'floor'", _FLOOR_KEYS)
+        colour = self.colour(doc, f"{what}: 'floor'", FLOOR_COLOUR)
+        thickness = self.number(doc, "thickness", f"{what}: 'floor'", 0.15)
+        if "min" not in doc and "max" not in doc:
+            return Floor((-math.inf, -math.inf), (math.inf, math.inf), thickness, colour)
+        low = self.point(doc.get("min"), f"{what}: the floor's 'min'")
+        high = self.point(doc.get("max"), f"{what}: the floor's 'max'")
+        return Floor(low, high, thickness, colour)
+
+    def walls(self, doc: Any, index: int, level: str, defaults: dict[str, Any]) -> list[Wall]:
+        what = f"{level}, wall {index}"
+        doc = self.mapping(doc, what, _WALL_KEYS)
+        name = self.text(doc, "name", what, f"wall_{index}")
+        what = f"{level}, wall '{name}'"
+        thickness = self.number(doc, "thickness", what, defaults["thickness"])
+        height = self.number(doc, "height", what, defaults["height"])
+        colour = self.colour(doc, what, defaults["colour"])
+        if "points" in doc:
+            if "start" in doc or "end" in doc:
+                raise self.error(f"{what} has both 'points' and 'start'/'end'", "give one of them")
+            points = [
+                self.point(p, f"{what}: point {i}")
+                for i, p in enumerate(self.sequence(doc["points"], f"{what}: 'points'"))
+            ]
+            if doc.get("closed", False) is True and points:
+                points.append(points[0])
+            if len(points) < 2:
+                raise self.error(f"{what}: 'points' needs at least two points")
+        else:
+            if "start" not in doc or "end" not in doc:
+                raise self.error(f"{what} needs 'start' and 'end' (or 'points')")
+            points = [self.point(doc["start"], f"{what}: 'start'"),
+                      self.point(doc["end"], f"{what}: 'end'")]  # fmt: skip
+        chain = len(points) > 2
+        walls = [
+            Wall(
+                name=f"{name}_{i}" if chain else name,
+                start=points[i],
+                end=points[i + 1],
+                thickness=thickness,
+                height=height,
+                colour=colour,
+                polyline=name if chain else None,
+                segment=i,
+            )
+            for i in range(len(points) - 1)
+        ]
+        for kind in ("door", "window"):
+            for i, opening_doc in enumerate(
+                self.sequence(doc.get(f"{kind}s", []), f"{what}: '{kind}s'")
+            ):
+                opening = self.opening(opening_doc, kind, i, what, name)
+                _place_opening(opening, walls, what, self)
+        return walls
+
+    def opening(self, doc: Any, kind: str, index: int, what: str, wall: str) -> Opening:
+        label = f"{what}, {kind} {index}"
+        doc = self.mapping(doc, label, _OPENING_KEYS)
+        name = self.text(doc, "name", label, f"{wall}_{kind}_{index}")
+        label = f"{what}, {kind} '{name}'"
+        if kind == "door" and "sill" in doc:
+            raise self.error(f"{label}: a door has no 'sill'", "make it a window")
+        return Opening(
+            kind="door" if kind == "door" else "window",
+            name=name,
+            at=self.number(doc, "at", label),
+            width=self.number(doc, "width", label, 0.9 if kind == "door" else 1.0),
+            height=self.number(
+                doc, "height", label, DEFAULT_DOOR_HEIGHT if kind == "door" else 1.0
+            ),
+            sill=0.0 if kind == "door" else self.number(doc, "sill", label, 0.9),
+        )
+
+    def stairs(self, doc: Any, index: int) -> Stairs:
+        what = f"stairs {index}"
+        doc = self.mapping(doc, what, _STAIRS_KEYS)
+        name = self.text(doc, "name", what, f"stairs_{index}")
+        what = f"stairs '{name}'"
+        steps = doc.get("steps", 10)
+        if isinstance(steps, bool) or not isinstance(steps, int):
+            raise self.error(f"{what}: 'steps' must be a whole number, got {steps!r}")
+        for key in ("from", "to"):
+            if key not in doc:
+                raise self.error(f"{what} needs '{key}' (a level name)")
+        return Stairs(
+            name=name,
+            bottom=self.text(doc, "from", what, ""),
+            top=self.text(doc, "to", what, ""),
+            start=self.point(doc.get("start"), f"{what}: 'start'"),
+            direction=math.radians(self.number(doc, "direction", what, 0.0)),
+            width=self.number(doc, "width", what, 1.0),
+            length=self.number(doc, "length", what),
+            steps=steps,
+            colour=self.colour(doc, what, STAIRS_COLOUR),
+        )
+
+    def item(self, doc: Any, index: int, level: str) -> Item:
+        what = f"furniture {index}"
+        doc = self.mapping(doc, what, _ITEM_KEYS)
+        shape = str(doc.get("type", "box"))
+        if shape not in _ITEM_TYPES:
+            raise self.error(f"{what}: unknown type '{shape}'", "types: " + ", ".join(_ITEM_TYPES))
+        name = self.text(doc, "name", what, f"{shape}_{index}")
+        what = f"furniture '{name}'"
+        if shape == "cylinder":
+            if "size" in doc:
+                raise self.error(f"{what}: a cylinder has 'radius' and 'height', not 'size'")
+            height = self.number(doc, "height", what)
+            radius = self.number(doc, "radius", what)
+            size = (2 * radius, 2 * radius, height)
+        else:
+            for key in ("radius", "height"):
+                if key in doc:
+                    raise self.error(f"{what}: a {shape} has 'size: [x, y, z]', not '{key}'")
+            raw = doc.get("size")
+            if (
+                not isinstance(raw, list)
+                or len(raw) != 3
+                or not all(isinstance(v, int | float) and not isinstance(v, bool) for v in raw)
+            ):
+                raise self.error(f"{what} needs 'size: [x, y, z]' in m, got {raw!r}")
+            size = (float(raw[0]), float(raw[1]), float(raw[2]))
+            radius = 0.0
+        return Item(
+            name=name,
+            shape="cylinder" if shape == "cylinder" else ("table" if shape == "table" else "box"),
+            position=self.point(doc.get("at"), f"{what}: 'at'"),
+            size=size,
+            level=self.text(doc, "level", what, level),
+            yaw=math.radians(self.number(doc, "yaw", what, 0.0)),
+            radius=radius,
+            colour=self.colour(doc, what, FURNITURE_COLOUR),
+        )
+
+
+def _place_opening(opening: Opening, walls: list[Wall], what: str, reader: _Reader) -> None:
+    """Put ``opening`` (``at`` along the whole chain) on the segment that holds its centre.
+
+    One reaching past the chain's ends is left to :meth:`BuildingPlan.validate` to report.
+    """
+    offset = 0.0
+    for wall in walls:
+        length = wall.length
+        if opening.at <= offset + length + EPS or wall is walls[-1]:
+            low, high = opening.at - opening.width / 2, opening.at + opening.width / 2
+            before = low < offset - EPS and wall is not walls[0]
+            after = high > offset + length + EPS and wall is not walls[-1]
+            if before or after:
+                corner = wall.start if before else wall.end
+                raise reader.error(
+                    f"{what}: {opening.kind} '{opening.name}' reaches round the corner at "
+                    f"({corner[0]:g}, {corner[1]:g})",
+                    "an opening must lie within one straight segment of the wall",
+                )
+            at = opening.at - offset
+            wall.openings.append(
+                Opening(opening.kind, opening.name, at, opening.width, opening.height, opening.sill)
+            )
+            return
+        offset += length
+
+
+def parse_colour(value: Any, what: str, source: str | None = None) -> Colour:
+    """An RGBA colour from ``[r, g, b(, a)]`` in 0..1, ``'#rrggbb'`` or a Gazebo material name.
+
+    Raises:
+        PlanError: Anything else.
+    """
+    from workbench.sim.gazebo_urdf import GAZEBO_COLOURS
+
+    if (
+        isinstance(value, list | tuple)
+        and len(value) in (3, 4)
+        and all(
+            isinstance(v, int | float) and not isinstance(v, bool) and 0 <= v <= 1 for v in value
+        )
+    ):
+        rgba = [float(v) for v in value] + [1.0] * (4 - len(value))
+        return (rgba[0], rgba[1], rgba[2], rgba[3])
+    if isinstance(value, str):
+        text = value.strip()
+        if text.startswith("#") and len(text) == 7:
+            try:
+                r, g, b = (int(text[i : i + 2], 16) / 255 for i in (1, 3, 5))
+                return (r, g, b, 1.0)
+            except ValueError:
+                pass
+        names = {key.lower().removeprefix("gazebo/"): rgba for key, rgba in GAZEBO_COLOURS.items()}
+        key = text.lower().removeprefix("gazebo/")
+        if key in names:
+            return names[key]
+    names_list = ", ".join(k.removeprefix("Gazebo/") for k in GAZEBO_COLOURS)
+    raise PlanError(
+        f"{what}: colour {value!r} is not [r, g, b(, a)] in 0..1, '#rrggbb' or a Gazebo colour",
+        path=source,
+        hint=f"names: {names_list}",
+    )
+
+
+def _kind(value: Any) -> str:
+    return "nothing" if value is None else type(value).__name__

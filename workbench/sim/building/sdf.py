@@ -1,0 +1,158 @@
+"""Write a building as Gazebo's building editor saves one: a static model of boxes, in a world or alone.
+
+The building is one static model named after the plan, one link per wall,
+floor slab and flight of stairs, each box a collision and a coloured visual.
+In a world, every piece of furniture is a static model of its own (so it can be
+looked up and moved like a Gazebo model); in a model it is one more link.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable
+from pathlib import Path
+from typing import Literal
+from xml.sax.saxutils import escape, quoteattr
+
+from workbench.sim.building.plan import BuildingPlan, Colour, Piece, PlanError
+
+
+def plan_to_sdf(plan: BuildingPlan, kind: Literal["world", "model"] = "world") -> str:
+    """The SDF text of ``plan``: a world (ground, sun, building, furniture) or one model.
+
+    Raises:
+        PlanError: The plan is not valid.
+    """
+    if kind not in ("world", "model"):
+        raise PlanError(f"kind must be 'world' or 'model', got {kind!r}")
+    plan.validate()
+    pieces = plan.pieces()
+    source = f" from {Path(plan.source).name}" if plan.source else ""
+    comment = [plan.description] if plan.description else []
+    comment += [f"{plan.summary()}.", f"Written by 'workbench world build'{source}."]
+    text = "\n     ".join(_comment(line) for line in comment)
+    head = ['<?xml version="1.0"?>', f"<!-- {text} -->", '<sdf version="1.6">']
+    if kind == "model":
+        body = _model(plan.name, pieces, indent=1)
+        return "\n".join([*head, *body, "</sdf>", ""])
+    building = [p for p in pieces if not p.furniture]
+    furniture = [p for p in pieces if p.furniture]
+    lines = [
+        *head,
+        f"  <world name={quoteattr(plan.name)}>",
+        "    <include><uri>model://ground_plane</uri></include>",
+        "    <include><uri>model://sun</uri></include>",
+        *_model(plan.name, building, indent=2),
+    ]
+    for group in _groups(furniture):
+        lines += _model(group[0].group, group, indent=2)
+    lines += [
+        '    <physics type="ode">',
+        "      <max_step_size>0.001</max_step_size>",
+        "      <real_time_factor>1</real_time_factor>",
+        "    </physics>",
+        "  </world>",
+        "</sdf>",
+        "",
+    ]
+    return "\n".join(lines)
+
+
+def save_building(
+    plan: BuildingPlan,
+    path: str | os.PathLike[str],
+    kind: Literal["world", "model"] | None = None,
+) -> list[Path]:
+    """Write ``plan`` and return the files written.
+
+    ``kind`` None: a world; a world written to an existing folder is
+    ``NAME.world`` there. A model written to a folder (an existing one, or a
+    path without a suffix) becomes a Gazebo model folder, ``model.config`` and
+    ``model.sdf``, for ``GAZEBO_MODEL_PATH`` and ``model://``; otherwise one file.
+
+    Raises:
+        PlanError: The plan is not valid or the file cannot be written.
+    """
+    target = Path(path)
+    kind = kind or "world"
+    text = plan_to_sdf(plan, kind)
+    files: list[tuple[Path, str]]
+    if kind == "model" and (target.is_dir() or not target.suffix):
+        config = (
+            '<?xml version="1.0"?>\n<model>\n'
+            f"  <name>{escape(plan.name)}</name>\n"
+            '  <version>1.0</version>\n  <sdf version="1.6">model.sdf</sdf>\n'
+            f"  <description>{escape(plan.summary())}</description>\n</model>\n"
+        )
+        files = [(target / "model.config", config), (target / "model.sdf", text)]
+    elif target.is_dir():
+        files = [(target / f"{plan.name}.{'world' if kind == 'world' else 'sdf'}", text)]
+    else:
+        files = [(target, text)]
+    for file, content in files:
+        try:
+            file.parent.mkdir(parents=True, exist_ok=True)
+            file.write_text(content)
+        except OSError as error:
+            raise PlanError(
+                f"cannot write the building: {error.strerror}", path=file, hint="choose another -o"
+            ) from None
+    return [file for file, _ in files]
+
+
+def _model(name: str, pieces: list[Piece], indent: int) -> list[str]:
+    pad = "  " * indent
+    lines = [f"{pad}<model name={quoteattr(name)}>", f"{pad}  <static>true</static>"]
+    for group in _groups(pieces):
+        lines.append(f"{pad}  <link name={quoteattr(group[0].group)}>")
+        for piece in group:
+            lines += _shape(piece, f"{pad}    ")
+        lines.append(f"{pad}  </link>")
+    lines.append(f"{pad}</model>")
+    return lines
+
+
+def _shape(piece: Piece, pad: str) -> list[str]:
+    x, y, z, yaw = piece.pose
+    pose = f"{pad}  <pose>{_n(x)} {_n(y)} {_n(z)} 0 0 {_n(yaw)}</pose>"
+    if piece.shape == "cylinder":
+        geometry = (
+            f"<cylinder><radius>{_n(piece.radius)}</radius>"
+            f"<length>{_n(piece.size[2])}</length></cylinder>"
+        )
+    else:
+        geometry = f"<box><size>{' '.join(_n(v) for v in piece.size)}</size></box>"
+    name = quoteattr(piece.name)
+    visual = quoteattr(f"{piece.name}_visual")
+    return [
+        f"{pad}<collision name={name}>",
+        pose,
+        f"{pad}  <geometry>{geometry}</geometry>",
+        f"{pad}</collision>",
+        f"{pad}<visual name={visual}>",
+        pose,
+        f"{pad}  <geometry>{geometry}</geometry>",
+        f"{pad}  {_material(piece.colour)}",
+        f"{pad}</visual>",
+    ]
+
+
+def _material(colour: Colour) -> str:
+    rgba = " ".join(_n(v) for v in colour)
+    return f"<material><ambient>{rgba}</ambient><diffuse>{rgba}</diffuse></material>"
+
+
+def _groups(pieces: Iterable[Piece]) -> list[list[Piece]]:
+    groups: dict[str, list[Piece]] = {}
+    for piece in pieces:
+        groups.setdefault(piece.group, []).append(piece)
+    return list(groups.values())
+
+
+def _n(value: float) -> str:
+    text = f"{round(value, 6):.10g}"
+    return "0" if text == "-0" else text
+
+
+def _comment(text: str) -> str:
+    return escape(text).replace("--", "- -")
