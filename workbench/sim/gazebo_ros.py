@@ -155,6 +155,7 @@ class GazeboRosApi:
         return self._spawn(request)
 
     def _spawn(self, request: Any) -> Any:
+        from workbench.sim.gazebo_ros_plugins.robot_namespace import with_robot_namespace
         from workbench.sim.loading import sim_model_from_xml
 
         name = request.model_name
@@ -169,6 +170,7 @@ class GazeboRosApi:
             model = sim_model_from_xml(
                 request.model_xml, name=name or None, source=f"spawn request '{name}'"
             )
+            model = with_robot_namespace(model, request.robot_namespace)
             self.server.spawn(model, X_WM)
         except _NoFrame:
             return _spawn_reply(

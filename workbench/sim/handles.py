@@ -7,7 +7,7 @@ N, N m; vectors in the world frame W.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -118,6 +118,52 @@ class ModelHandle:
         """Push a link at its origin with ``force`` and ``torque`` in W until this plugin's next update."""
         self._world.body(f"{self.name}::{link}")  # checks the name
         self._server.set_plugin_wrench(self._owner, f"{self.name}::{link}", force, torque)
+
+    @property
+    def sim_time(self) -> float:
+        """Simulated time, s."""
+        return float(self._world.time)
+
+    @property
+    def time_step(self) -> float:
+        """The physics step, s."""
+        return float(self._world.time_step)
+
+    def has_joint(self, joint: str) -> bool:
+        """True when the model has a joint called ``joint``."""
+        return bool(self._world.plant.HasJointNamed(joint, self._world.model_instance(self.name)))
+
+    def joint_links(self, joint: str) -> tuple[str, str]:
+        """``(parent, child)``: the links a joint connects."""
+        item = self._world.joint(self.name, joint)
+        return item.parent_body().name(), item.child_body().name()
+
+    def link_pose(self, link: str) -> Any:
+        """``X_WL``, a link's frame in the world (a RigidTransform)."""
+        body = self._world.body(f"{self.name}::{link}")
+        return self._world.plant.EvalBodyPoseInWorld(self._context(), body)
+
+    def add_velocity_motors(self, limits: Mapping[str, float]) -> None:
+        """Drive joints with velocity motors ``{joint: effort limit}`` (Gazebo's
+        ``Joint::SetParam("fmax")`` with ``"vel"``; see :mod:`workbench.sim.motors`).
+
+        They hold velocity 0 until :meth:`set_motor_velocities`. The world's diagram
+        is rebuilt (every model keeps its state).
+        """
+        self._world.add_velocity_motors(self.name, limits)
+        self._server.rebuilt()
+
+    def set_motor_velocities(self, velocities: Mapping[str, float]) -> None:
+        """Targets ``{joint: velocity}`` of the motors, rad/s or m/s, until changed."""
+        self._world.set_motor_targets(self.name, velocities)
+
+    def motor_efforts(self) -> dict[str, float]:
+        """``{joint: effort}`` the motors applied in the last step, N m or N."""
+        return self._world.motor_efforts(self.name)
+
+    def set_twist(self, v_W: Sequence[float], w_W: Sequence[float]) -> None:
+        """Set the root link's linear and angular velocity now (W, m/s and rad/s)."""
+        self._world.set_model_state(self.name, self.pose(), v_W, w_W)
 
 
 class WorldHandle:

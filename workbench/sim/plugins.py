@@ -53,7 +53,17 @@ _LOG = logging.getLogger("workbench.sim.plugins")
 
 #: Gazebo's ROS plugins that workbench provides, by their library name: ``module:Class``.
 #: A ``<plugin filename="libgazebo_ros_diff_drive.so">`` in a model loads the class here.
-BUILTIN_PLUGINS: dict[str, str] = {}
+BUILTIN_PLUGINS: dict[str, str] = {
+    "libgazebo_ros_diff_drive.so": (
+        "workbench.sim.gazebo_ros_plugins.diff_drive:GazeboRosDiffDrive"
+    ),
+    "libgazebo_ros_joint_state_publisher.so": (
+        "workbench.sim.gazebo_ros_plugins.joint_state_publisher:GazeboRosJointStatePublisher"
+    ),
+    "libgazebo_ros_planar_move.so": (
+        "workbench.sim.gazebo_ros_plugins.planar_move:GazeboRosPlanarMove"
+    ),
+}
 
 #: The sensor plugins (workbench.sim.sensors).
 BUILTIN_PLUGINS.update(

@@ -37,6 +37,9 @@ class PlacedModel:
         instance: The model instance in the current plant.
         initial_X_WM: The pose the model was spawned at (``reset_world`` returns there).
         X_MR: Pose of the model's root link in its model frame (set when parsed).
+        motors: Joint velocity motors ``{joint: effort limit}`` a plugin asked for
+            (see :mod:`workbench.sim.motors`), N m or N.
+        motor_targets: Their target velocities ``{joint: velocity}``, rad/s or m/s.
     """
 
     model: SimModel
@@ -45,6 +48,8 @@ class PlacedModel:
     instance: Any = None
     initial_X_WM: Any = None
     X_MR: Any = None
+    motors: dict[str, float] = field(default_factory=dict)
+    motor_targets: dict[str, float] = field(default_factory=dict)
 
 
 def add_ground(plant: Any, z: float) -> None:
@@ -160,6 +165,10 @@ def add_placed_model(plant: Any, placed: PlacedModel, scene_graph: Any = None) -
         if joint.num_positions() != 1:
             raise SimulationError(f"joint '{joint_name}' of '{model.name}' is not a 1-dof joint")
         joint.set_default_positions(np.array([float(value)]))
+    if placed.motors:
+        from workbench.sim.motors import add_velocity_motors
+
+        add_velocity_motors(plant, instance, placed.motors)
     if not model.gravity:
         plant.set_gravity_enabled(instance, False)
     if not model.static and scene_graph is not None and len(plant.GetBodyIndices(instance)) == 1:

@@ -346,6 +346,10 @@ class SimServer:
 
         self.call(work)
 
+    def rebuilt(self) -> None:
+        """Called after something rebuilt the world's diagram: plugins' forces go back on."""
+        self._after_rebuild()
+
     def _after_rebuild(self) -> None:
         self._pace_reset = True
         self._push_forces()

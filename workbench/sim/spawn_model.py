@@ -3,8 +3,8 @@
 Takes gazebo_ros's arguments: a source (``-file FILE``, ``-param NAME``,
 ``-stdin``), its format (``-urdf`` or ``-sdf``), ``-model NAME``, the pose
 ``-x -y -z -R -P -Y`` (m, rad), ``-J JOINT VALUE`` (repeatable),
-``-reference_frame``, ``-robot_namespace``, ``-gazebo_namespace`` (default
-``/gazebo``), ``-unpause``, ``-wait MODEL`` and ``-timeout``. It waits for the
+``-reference_frame``, ``-robot_namespace`` (the plugins' namespace; default
+the node's, ``/``, as gazebo_ros), ``-gazebo_namespace`` (default ``/gazebo``), ``-unpause``, ``-wait MODEL`` and ``-timeout``. It waits for the
 spawn service, calls it, prints Gazebo's status and exits 0 on success, 1 on a
 refusal. A ``.xacro`` file is expanded first (a convenience: gazebo_ros reads
 the file as it is).
@@ -52,7 +52,12 @@ def _parser() -> argparse.ArgumentParser:
         help="initial position of a joint (repeatable)",
     )
     parser.add_argument("-reference_frame", default="", metavar="FRAME")
-    parser.add_argument("-robot_namespace", default="", metavar="NS")
+    parser.add_argument(
+        "-robot_namespace",
+        default=None,
+        metavar="NS",
+        help="namespace of the model's plugins (default: this node's, as gazebo_ros)",
+    )
     parser.add_argument("-gazebo_namespace", default="/gazebo", metavar="NS")
     parser.add_argument("-unpause", action="store_true", help="unpause physics after spawning")
     parser.add_argument("-wait", metavar="MODEL", help="wait for MODEL to exist first")
@@ -100,7 +105,7 @@ def spawn(node: Any, args: argparse.Namespace) -> int:
     request = SpawnModel.Request(
         model_name=args.model,
         model_xml=xml,
-        robot_namespace=args.robot_namespace,
+        robot_namespace=node.namespace if args.robot_namespace is None else args.robot_namespace,
         reference_frame=args.reference_frame,
     )
     request.initial_pose = _pose_message(pose)

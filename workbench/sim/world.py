@@ -459,6 +459,9 @@ class World:
             self.simulator.set_target_realtime_rate(self.realtime_rate)
         self.context = self.simulator.get_mutable_context()
         self.set_body_wrenches([])
+        for name, placed in self._models.items():
+            if placed.motors:
+                self.set_motor_targets(name, placed.motor_targets)
 
     def _add_visualizers(self) -> None:
         from pydrake.geometry import MeshcatVisualizer, MeshcatVisualizerParams, Role
@@ -721,6 +724,48 @@ class World:
             tau[joint.velocity_start()] += float(effort)
         source_context = self.efforts_source.GetMyMutableContextFromRoot(self.context)
         self.efforts_source.get_mutable_source_value(source_context).set_value(tau)
+
+    def add_velocity_motors(self, model: str, limits: Mapping[str, float]) -> None:
+        """Give joints of a model velocity motors ``{joint: effort limit}`` (N m or N), held at 0.
+
+        Gazebo's ``Joint::SetParam("vel"/"fmax")`` (see :mod:`workbench.sim.motors`).
+        The diagram is rebuilt (every model keeps its state).
+
+        Raises:
+            SimulationError: Not a model of this world, or a joint is missing or not 1-dof
+                (the world is unchanged).
+        """
+        placed = self._models.get(model)
+        if placed is None:
+            raise SimulationError(f"no model named '{model}' in the world")
+        for joint_name in limits:
+            if self.joint(model, joint_name).num_velocities() != 1:
+                raise SimulationError(f"joint '{joint_name}' of '{model}' is not a 1-dof joint")
+        before = dict(placed.motors)
+        placed.motors.update({joint: float(limit) for joint, limit in limits.items()})
+        try:
+            self.rebuild()
+        except (SimulationError, RuntimeError):
+            placed.motors = before
+            raise
+
+    def set_motor_targets(self, model: str, velocities: Mapping[str, float]) -> None:
+        """Target velocities ``{joint: v}`` of a model's motors (rad/s or m/s) until changed."""
+        from workbench.sim.motors import fix_motor_targets
+
+        placed = self._models.get(model)
+        if placed is None:
+            raise SimulationError(f"no model named '{model}' in the world")
+        placed.motor_targets.update({joint: float(v) for joint, v in velocities.items()})
+        plant_context = self.plant.GetMyMutableContextFromRoot(self.context)
+        fix_motor_targets(self.plant, plant_context, placed.instance, placed.motor_targets)
+
+    def motor_efforts(self, model: str) -> dict[str, float]:
+        """``{joint: effort}`` a model's motors applied in the last step, N m or N."""
+        from workbench.sim.motors import motor_efforts
+
+        plant_context = self.plant.GetMyContextFromRoot(self.context)
+        return motor_efforts(self.plant, plant_context, self.model_instance(model))
 
     def set_joint_positions(self, model: str, positions: Mapping[str, float]) -> None:
         """Move 1-dof joints of a model to ``{joint: position}`` now, at rest (rad or m)."""
