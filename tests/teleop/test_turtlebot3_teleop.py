@@ -180,3 +180,32 @@ def test_sigterm_stops_it_cleanly_with_a_zero_twist(teleop_process):
     assert "Traceback" not in teleop.child.before
     teleop.wait_twists(count + 1)
     assert teleop.pairs()[-1] == (0.0, 0.0)
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="pseudo-terminals are POSIX")
+def test_the_labs_roslaunch_line_works_with_model_from_the_command_line(core_uri):
+    """``roslaunch turtlebot3_teleop turtlebot3_teleop_key.launch``, here with model:=waffle_pi."""
+    import os
+
+    import pexpect
+
+    env = dict(os.environ, WORKBENCH_MASTER_URI=core_uri, TURTLEBOT3_MODEL="burger")
+    child = pexpect.spawn(
+        sys.executable,
+        ["-m", "workbench", "launch", "turtlebot3_teleop", "turtlebot3_teleop_key.launch"]
+        + ["model:=waffle_pi"],
+        env=env,
+        timeout=30,
+        encoding="utf-8",
+    )
+    try:
+        for line in MANUAL_SCREEN:
+            child.expect_exact(line)
+        child.send("w" * 27)
+        child.expect_exact("currently:\tlinear vel 0.26\t angular vel 0.0 ")  # not burger's 0.22
+        child.send("\x03")
+        child.expect_exact("process has finished cleanly")
+        child.sendintr()
+        child.expect(pexpect.EOF)
+    finally:
+        child.close(force=True)
