@@ -172,3 +172,29 @@ def test_the_node_wanders_on_a_bus_and_stops_with_a_zero_twist():
     assert not thread.is_alive()
     assert wait_for(lambda: (twists[-1].linear.x, twists[-1].angular.z) == (0.0, 0.0))
     bus.shutdown()
+
+
+def test_workbench_run_turtlebot3_drive_stops_on_sigterm_with_a_zero_twist(
+    teleop_process, core_uri
+):
+    import signal
+
+    import pexpect
+
+    wanderer = teleop_process("turtlebot3_gazebo", "turtlebot3_drive")
+    wanderer.child.expect_exact("TurtleBot3 Simulation Node Init")
+    bus = Bus.connect(core_uri)
+    try:
+        robot = Node("robot", bus=bus)
+        scans = robot.create_publisher("/scan", LaserScan)
+        assert wait_for(lambda: scans.get_num_connections() > 0)
+        scans.publish(lds_scan())
+        assert wait_for(lambda: (0.3, 0.0) in wanderer.pairs()), wanderer.pairs()
+        wanderer.child.kill(signal.SIGTERM)
+        wanderer.child.expect(pexpect.EOF)
+        wanderer.child.close()
+        assert wanderer.child.exitstatus == 128 + signal.SIGTERM
+        assert "Traceback" not in wanderer.child.before
+        assert wait_for(lambda: wanderer.pairs()[-1] == (0.0, 0.0)), wanderer.pairs()[-3:]
+    finally:
+        bus.shutdown()
