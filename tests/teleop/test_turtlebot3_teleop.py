@@ -14,6 +14,7 @@ import signal
 import sys
 
 import pytest
+from conftest import TeleopProcess
 
 from workbench.teleop.turtlebot3 import (
     TB3_BANNER,
@@ -144,18 +145,18 @@ def test_workbench_run_turtlebot3_teleop_key_with_waffle_limits(teleop_process):
         child.expect_exact(line)
     teleop.wait_twists(2)  # it publishes every 0.1 s while no key comes
     assert set(teleop.pairs()) == {(0.0, 0.0)}
-    child.send("w" * 30)  # 0.30 m/s asked, waffle's 0.26 m/s granted
+    teleop.type("w" * 30)  # 0.30 m/s asked, waffle's 0.26 m/s granted
     child.expect_exact("currently:\tlinear vel 0.26\t angular vel 0.0 ")
-    child.send("a")
+    teleop.type("a")
     child.expect_exact("currently:\tlinear vel 0.26\t angular vel 0.1 ")
     teleop.wait_twists(len(teleop.twists) + 60)  # the ramp reaches the target
     linear, angular = teleop.pairs()[-1]
     assert linear == pytest.approx(0.26) and angular == pytest.approx(0.1)
     steps = [b[0] - a[0] for a, b in zip(teleop.pairs(), teleop.pairs()[1:], strict=False)]
     assert max(steps) == pytest.approx(0.005)  # never more than half a step per message
-    child.send(" ")
+    teleop.type(" ")
     child.expect_exact("currently:\tlinear vel 0.0\t angular vel 0.0 ")
-    child.send("\x03")
+    teleop.type("\x03")
     child.expect(pexpect.EOF)
     child.close()
     assert child.exitstatus == 0
@@ -168,7 +169,7 @@ def test_sigterm_stops_it_cleanly_with_a_zero_twist(teleop_process):
 
     teleop = teleop_process("turtlebot3_teleop", "turtlebot3_teleop_key")
     teleop.child.expect_exact("CTRL-C to quit")
-    teleop.child.send("ww")
+    teleop.type("ww")
     teleop.child.expect_exact("currently:\tlinear vel 0.02\t angular vel 0.0 ")
     teleop.wait_twists(len(teleop.twists) + 5)
     assert teleop.pairs()[-1][0] == pytest.approx(0.02)
@@ -198,12 +199,13 @@ def test_the_labs_roslaunch_line_works_with_model_from_the_command_line(core_uri
         timeout=30,
         encoding="utf-8",
     )
+    teleop = TeleopProcess(child=child)
     try:
         for line in MANUAL_SCREEN:
             child.expect_exact(line)
-        child.send("w" * 27)
+        teleop.type("w" * 27)
         child.expect_exact("currently:\tlinear vel 0.26\t angular vel 0.0 ")  # not burger's 0.22
-        child.send("\x03")
+        teleop.type("\x03")
         child.expect_exact("process has finished cleanly")
         child.sendintr()
         child.expect(pexpect.EOF)

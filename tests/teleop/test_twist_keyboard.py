@@ -233,12 +233,12 @@ def test_workbench_run_teleop_twist_keyboard_py(teleop_process):
     child.expect_exact("CTRL-C to quit")
     child.expect_exact("currently:\tspeed 0.4\tturn 1.0 ")
     assert teleop.wait_twists(1) == [(0.0, 0.0)]
-    child.send("i")
+    teleop.type("i")
     assert teleop.wait_twists(2)[1] == (0.4, 0.0)
-    child.send("q")
+    teleop.type("q")
     child.expect_exact(f"currently:\tspeed {0.4 * 1.1}\tturn {1.0 * 1.1} ")
     assert teleop.wait_twists(3)[2] == (0.4 * 1.1, 0.0)
-    child.send("\x03")
+    teleop.type("\x03")
     child.expect(pexpect.EOF)
     child.close()
     assert child.exitstatus == 0
@@ -251,7 +251,7 @@ def test_sigterm_stops_it_cleanly_with_a_zero_twist(teleop_process):
 
     teleop = teleop_process("teleop_twist_keyboard", "teleop_twist_keyboard")
     teleop.child.expect_exact("currently:\tspeed 0.5\tturn 1.0 ")
-    teleop.child.send("u")
+    teleop.type("u")
     assert teleop.wait_twists(2)[1] == (0.5, 1.0)
     time.sleep(0.2)
     teleop.child.kill(signal.SIGTERM)
