@@ -12,6 +12,7 @@ import pytest
         ["start_demo.launch"],
         ["start_demo_carrot.launch"],
         ["gazebo_worlds", "table.launch"],
+        ["turtlebot3_teleop", "turtlebot3_teleop_key.launch"],
     ],
 )
 def test_shipped_launch_files_by_package_or_name(tmp_path, run_cli, words):

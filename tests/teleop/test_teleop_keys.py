@@ -1,10 +1,9 @@
-"""Keyboard teleop through a real pseudo-terminal.
+"""turtle_teleop_key through a real pseudo-terminal.
 
 turtle_teleop_key (turtlesim, Noetic): arrow keys publish linear.x = +-2.0 or
 angular.z = +-2.0 (scale_linear/scale_angular 2.0), one Twist per key, 'q' quits,
 banner "Reading from keyboard / --- / Use arrow keys to move the turtle. 'q' to quit."
-teleop_twist_keyboard: i forward, j/l turn, , back, shifted keys strafe, q/z
-scale both speeds by 10%, any other key stops, speed 0.5 and turn 1.0.
+(teleop_twist_keyboard is tested in test_twist_keyboard.py.)
 """
 
 from __future__ import annotations
@@ -19,8 +18,8 @@ import pytest
 
 from workbench.bus import Bus, Node
 from workbench.msgs.geometry_msgs import Twist
-from workbench.teleop.keys import TurtleKeys, TwistKeys
-from workbench.teleop.run import turtle_teleop, twist_teleop
+from workbench.teleop.keys import TurtleKeys
+from workbench.teleop.run import turtle_teleop
 from workbench.teleop.terminal import NotATerminalError, RawTerminal
 
 UP, DOWN, RIGHT, LEFT = "\x1b[A", "\x1b[B", "\x1b[C", "\x1b[D"
@@ -33,17 +32,6 @@ def test_turtle_keys():
     assert keys.feed(UP[:2]) == [] and [c.x for c in keys.feed(UP[2:])] == [2.0]  # split escape
     keys.feed("q")
     assert keys.quit
-
-
-def test_twist_keys():
-    keys = TwistKeys()
-    assert keys.press("i")[0].x == 0.5
-    assert keys.press("j")[0].yaw == 1.0
-    assert keys.press("J")[0].y == 0.5
-    command, line = keys.press("q")
-    assert command.y == pytest.approx(0.55) and line == "currently:\tspeed 0.55\tturn 1.1 "
-    assert keys.press("k")[0] == type(command)()  # any other key stops
-    assert keys.press("") == (None, None)  # timeout while stopped: nothing to send
 
 
 def _run_in_pty(loop, keys_to_type: str, topic: str, raw: bool = False):
@@ -82,13 +70,6 @@ def test_turtle_teleop_in_a_pty(capsys):
     assert rc == 0
     assert [(t.linear.x, t.angular.z) for t in got] == [(2.0, 0.0), (2.0, 0.0), (0.0, 2.0)]
     assert "Use arrow keys to move the turtle. 'q' to quit." in capsys.readouterr().out
-
-
-def test_twist_teleop_in_a_pty(capsys):
-    rc, got = _run_in_pty(twist_teleop, "il\x03", "/cmd_vel", raw=True)
-    assert rc == 0
-    assert [(t.linear.x, t.angular.z) for t in got][:3] == [(0.5, 0.0), (0.0, -1.0), (0.0, 0.0)]
-    assert "Moving around:" in capsys.readouterr().out
 
 
 def test_without_a_terminal(tmp_path):

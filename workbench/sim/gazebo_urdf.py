@@ -21,7 +21,10 @@ Every ``<gazebo>`` element is then removed. Links a floating model cannot do
 without get what Gazebo tolerates fixed, each with a one-line warning: an
 inertia that breaks the triangle inequality (:mod:`workbench.sim.inertia`), and
 a missing ``<inertial>`` or a mass that is not positive (SDFormat's default
-inertial, 1 kg and 1 kg m^2, as Gazebo gives an SDF link without one).
+inertial, 1 kg and 1 kg m^2, as Gazebo gives an SDF link without one). A link
+without ``<inertial>`` that fixed joints tie to a link with mass (a
+``base_footprint``, a sensor frame) is left massless, without a warning: Gazebo
+lumps fixed-joint links into one body, where it adds nothing.
 """
 
 from __future__ import annotations
@@ -109,8 +112,10 @@ def sim_model_from_urdf(
             "workbench switches gravity per model, so it stays on"
         )
     if not model.static:
+        welded = _welded_to_mass(root, links)
         for link_name, link in links.items():
-            _fix_inertial(link, link_name, model, where)
+            if link_name not in welded:
+                _fix_inertial(link, link_name, model, where)
     model.text = etree.tostring(root, encoding="unicode")
     return model
 
@@ -192,6 +197,27 @@ def _contact(link: Any, values: dict[str, float]) -> None:
                 )
         for key, value in entries.items():
             etree.SubElement(properties, f"{{{DRAKE_NS}}}{key}", value=f"{value:.12g}")
+
+
+def _welded_to_mass(root: Any, links: dict[str, Any]) -> set[str]:
+    """Links without ``<inertial>`` that fixed joints tie to a link with mass.
+
+    Gazebo lumps links joined by fixed joints into one body, so such a link (a
+    ``base_footprint``, a sensor frame) adds no mass there; Drake welds it massless.
+    """
+    groups: dict[str, set[str]] = {name: {name} for name in links}
+    for joint in root.iterchildren("joint"):
+        if joint.get("type") != "fixed":
+            continue
+        parent, child = joint.find("parent"), joint.find("child")
+        a = parent.get("link") if parent is not None else None
+        b = child.get("link") if child is not None else None
+        if a in groups and b in groups and groups[a] is not groups[b]:
+            merged = groups[a] | groups[b]
+            for name in merged:
+                groups[name] = merged
+    massless = {name for name, link in links.items() if link.find("inertial") is None}
+    return {name for name in massless if groups[name] - massless}
 
 
 def _fix_inertial(link: Any, link_name: str, model: SimModel, where: str) -> None:

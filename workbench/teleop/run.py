@@ -1,12 +1,16 @@
-"""Keyboard teleop loops on the bus (turtle_teleop_key, teleop_twist_keyboard)."""
+"""turtle_teleop_key's loop on the bus (the other teleops live in their own modules)."""
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 from typing import Any
 
-from workbench.teleop.keys import TURTLE_BANNER, TWIST_BANNER, TurtleKeys, TwistKeys
+from workbench.teleop.keys import TURTLE_BANNER, TurtleKeys
 from workbench.teleop.terminal import RawTerminal
+from workbench.teleop.twist_keyboard import main as twist_teleop_main
+from workbench.teleop.twist_keyboard import twist_teleop
+
+__all__ = ["turtle_teleop", "turtle_teleop_main", "twist_teleop", "twist_teleop_main"]
 
 
 def turtle_teleop(node: Any, terminal: RawTerminal, topic: str = "turtle1/cmd_vel") -> int:
@@ -24,30 +28,6 @@ def turtle_teleop(node: Any, terminal: RawTerminal, topic: str = "turtle1/cmd_ve
     return 0
 
 
-def twist_teleop(node: Any, terminal: RawTerminal, topic: str = "cmd_vel") -> int:
-    """teleop_twist_keyboard: the u/i/o block, speed keys, stop on any other key."""
-    from workbench.msgs.geometry_msgs import Twist
-
-    keys = TwistKeys(node.get_param("~speed", 0.5), node.get_param("~turn", 1.0))
-    timeout = float(node.get_param("~key_timeout", 0.5))
-    pub = node.create_publisher(topic, Twist, queue_size=1)
-    print(TWIST_BANNER, flush=True)
-    print(keys.status(), flush=True)
-    with terminal:
-        while not keys.quit:
-            chars = terminal.read(timeout if timeout > 0 else None) or ""
-            for key in chars or [""]:
-                command, line = keys.press(key)
-                if line:
-                    print(line, flush=True)
-                if command is not None:
-                    pub.publish(command.to_twist())
-                if keys.quit:
-                    break
-    pub.publish(Twist())
-    return 0
-
-
 def turtle_teleop_main(argv: Sequence[str] | None = None) -> int:
     """``turtlesim/turtle_teleop_key`` for ``workbench run`` and launch files."""
     from workbench.bus import Node
@@ -55,19 +35,6 @@ def turtle_teleop_main(argv: Sequence[str] | None = None) -> int:
     node = Node("teleop_turtle", argv=list(argv or []))
     try:
         return turtle_teleop(node, RawTerminal())
-    except KeyboardInterrupt:
-        return 0
-    finally:
-        node.shutdown()
-
-
-def twist_teleop_main(argv: Sequence[str] | None = None) -> int:
-    """``teleop_twist_keyboard/teleop_twist_keyboard`` for ``workbench run``."""
-    from workbench.bus import Node
-
-    node = Node("teleop_twist_keyboard", argv=list(argv or []))
-    try:
-        return twist_teleop(node, RawTerminal(raw=True))
     except KeyboardInterrupt:
         return 0
     finally:
