@@ -28,6 +28,7 @@ import math
 import re
 import threading
 from collections.abc import Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -57,8 +58,21 @@ def yaw_quaternion(yaw: float) -> tuple[float, float, float, float]:
     return 0.0, 0.0, math.sin(yaw / 2.0), math.cos(yaw / 2.0)
 
 
-def load_grid(meta: MapMetadata) -> tuple[np.ndarray, int, int]:
-    """The map's cells (flat, row-major from the origin) with width and height.
+@dataclass
+class LoadedMap:
+    """A map read from disk, ready to publish.
+
+    Attributes:
+        meta: Its YAML's contents (or the deprecated form's values).
+        cells: ``(height, width)`` int8 cells, row 0 at the origin.
+    """
+
+    meta: MapMetadata
+    cells: np.ndarray
+
+
+def load_image(meta: MapMetadata) -> LoadedMap:
+    """Read the image of ``meta`` into cells as map_server's ``loadMapFromFile``.
 
     Raises:
         MapFileError: ``failed to open image file "IMAGE": reason``, as map_server says.
@@ -67,9 +81,16 @@ def load_grid(meta: MapMetadata) -> tuple[np.ndarray, int, int]:
         pixels, has_alpha = read_image(meta.image)
     except MapFileError as error:
         raise MapFileError(f'failed to open image file "{meta.image}": {error.message}') from None
-    cells = pixels_to_map(pixels, has_alpha, meta)
-    height, width = cells.shape
-    return cells.reshape(-1), int(width), int(height)
+    return LoadedMap(meta, pixels_to_map(pixels, has_alpha, meta))
+
+
+def load_map_yaml(path: str) -> LoadedMap:
+    """Read a map YAML and its image as ``map_server MAP.yaml`` does.
+
+    Raises:
+        MapFileError: map_server's error for the first bad key, or the image's.
+    """
+    return load_image(read_map_yaml(path))
 
 
 class MapServer:
@@ -77,8 +98,9 @@ class MapServer:
 
     Args:
         node: The ``workbench.bus.Node``.
-        fname: The map YAML (or, with ``resolution``, the image).
-        resolution: Non-zero: the deprecated form (``fname`` is an image of this
+        source: The map YAML (or, with ``resolution``, the image), or a map loaded
+            already (:func:`load_map_yaml`).
+        resolution: Non-zero: the deprecated form (``source`` is an image of this
             resolution, read with the ``~negate``/``~occupied_thresh``/``~free_thresh``
             parameters and origin 0).
 
@@ -86,7 +108,7 @@ class MapServer:
         MapFileError: The map cannot be loaded (map_server's error text).
     """
 
-    def __init__(self, node: Any, fname: str, resolution: float = 0.0) -> None:
+    def __init__(self, node: Any, source: str | LoadedMap, resolution: float = 0.0) -> None:
         from workbench.msgs.nav_msgs import GetMap, LoadMap, MapMetaData, OccupancyGrid
 
         self.node = node
@@ -100,14 +122,16 @@ class MapServer:
         ]
         self.metadata_pub = node.create_publisher("map_metadata", MapMetaData, 1, latch=True)
         self.map_pub = node.create_publisher("map", OccupancyGrid, 1, latch=True)
-        if resolution == 0:
-            self.load_yaml(fname)
+        if isinstance(source, LoadedMap):
+            self.publish(source)
+        elif resolution == 0:
+            self.load_yaml(source)
         else:
-            self.load_image(fname, resolution)
+            self.load_image(source, resolution)
 
     def load_yaml(self, path: str) -> None:
         """Load the map of a YAML and publish it (``loadMapFromYaml``)."""
-        self._publish(read_map_yaml(path))
+        self.publish(load_map_yaml(path))
 
     def load_image(self, image: str, resolution: float) -> None:
         """Load an image with the deprecated parameters and publish it (``loadMapFromParams``)."""
@@ -120,13 +144,15 @@ class MapServer:
             occupied_thresh=float(self.node.get_param("~occupied_thresh", 0.65)),
             free_thresh=float(self.node.get_param("~free_thresh", 0.196)),
         )
-        self._publish(meta)
+        self.publish(load_image(meta))
 
-    def _publish(self, meta: MapMetadata) -> None:
+    def publish(self, loaded: LoadedMap) -> None:
+        """Make ``loaded`` the map: publish it on ``map`` and ``map_metadata``, serve it."""
         from workbench.msgs.nav_msgs import OccupancyGrid
 
+        meta = loaded.meta
         self.log.info('Loading map from image "%s"', meta.image)
-        cells, width, height = load_grid(meta)
+        height, width = (int(n) for n in loaded.cells.shape)
         grid = OccupancyGrid()
         now = self.node.now()
         grid.header.frame_id = self.frame_id
@@ -138,7 +164,7 @@ class MapServer:
         info.origin.position.x, info.origin.position.y = meta.origin[0], meta.origin[1]
         q = info.origin.orientation
         q.x, q.y, q.z, q.w = yaw_quaternion(meta.origin[2])
-        grid.data = cells
+        grid.data = loaded.cells.reshape(-1)
         self.log.info("Read a %d X %d map @ %.3f m/cell", width, height, info.resolution)
         with self._lock:
             self.map = grid
@@ -182,15 +208,25 @@ def main(argv: Sequence[str] = ()) -> int:
     from workbench.bus.names import myargv
 
     fname, resolution = parse_arguments(myargv(list(argv)))
+    # A bad map is reported before joining the bus, so it is the only line printed.
+    source: str | LoadedMap = load_map_yaml(fname) if resolution == 0 else fname
     node = Node("map_server", argv=list(argv), anonymous=True)
     try:
         if len(myargv(list(argv))) == 2:
             node.get_logger().warn(DEPRECATED_WARNING)
-        MapServer(node, fname, resolution)
+        MapServer(node, source, resolution)
         node.bus.spin()
     finally:
         node.shutdown()
     return 0
 
 
-__all__ = ["MapServer", "load_grid", "main", "parse_arguments", "yaw_quaternion"]
+__all__ = [
+    "LoadedMap",
+    "MapServer",
+    "load_image",
+    "load_map_yaml",
+    "main",
+    "parse_arguments",
+    "yaw_quaternion",
+]
