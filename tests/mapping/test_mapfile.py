@@ -10,7 +10,7 @@ Matched against ros-planning/navigation, map_server (noetic branch):
   occupied_thresh: 0.65/free_thresh: 0.196``.
 * ``src/image_loader.cpp`` (loadMapFromFile): ``occ = (255 - mean) / 255``
   (mean inverted first when ``negate``); ``occ > occupied_thresh`` -> 100,
-  ``occ < free_thresh`` -> 0, else -1 (trinary) or ``99 * ratio`` (scale,
+  ``occ < free_thresh`` -> 0, else -1 (trinary) or ``1 + 98 * ratio`` (scale,
   unless alpha < 1), raw copies the value; image row j is map row h-1-j.
 * ``src/main.cpp``: every key but ``mode`` is required; a relative ``image``
   is resolved against the YAML's directory.
@@ -96,8 +96,8 @@ def test_negate_scale_and_raw_modes(tmp_path):
     negated = load_map(_write_yaml(tmp_path / "n.yaml", negate=1))
     assert negated.data.tolist() == [[0, -1, -1, 100]]
     scaled = load_map(_write_yaml(tmp_path / "s.yaml", mode="scale"))
-    # 90: occ = 0.6471 -> 99 * (0.6471 - 0.196) / (0.65 - 0.196) = 98.4 -> 98 (truncated);
-    # 150: occ = 0.4118 -> 47.05 -> 47
+    # 90: occ = 0.6471 -> 1 + 98 * (0.6471 - 0.196) / (0.65 - 0.196) = 98.36 -> 98 (truncated);
+    # 150: occ = 0.4118 -> 47.58 -> 47 (map_server 1.17.1's 1 + 98 * ratio)
     assert scaled.data.tolist() == [[100, 98, 47, 0]]
     raw = load_map(_write_yaml(tmp_path / "r.yaml", mode="raw"))
     # The cell is a signed char holding the pixel value (255 wraps to -1 as in the message).

@@ -1,7 +1,7 @@
 """map_server maps on disk: ``NAME.yaml`` + ``NAME.pgm``, saved as ``map_saver`` and loaded as ``map_server``.
 
 Saving follows ``map_saver`` (ros-planning/navigation, noetic): a binary P5
-PGM with rows top-down, cells ``0..25`` written 254 (free), ``65..100``
+PGM with rows top-down, cells ``0..25`` written 254 (free), ``65`` and above
 written 0 (occupied), everything else (unknown ``-1`` and ``26..64``) 205,
 and a YAML with ``image, resolution, origin, negate: 0,
 occupied_thresh: 0.65, free_thresh: 0.196``.
@@ -9,9 +9,10 @@ occupied_thresh: 0.65, free_thresh: 0.196``.
 Loading follows ``map_server``'s image loader: the mean of the colour
 channels ``c`` (inverted when ``negate``), ``occ = (255 - c) / 255``;
 ``occ > occupied_thresh`` is 100, ``occ < free_thresh`` is 0, anything
-between is -1 (``trinary``, the default), or ``99 * (occ - free) / (occ_th -
-free)`` (``scale``, where a fully transparent pixel stays -1); ``raw`` copies
-``c`` into the cell. Image row 0 becomes the top map row.
+between is -1 (``trinary``, the default), or ``1 + 98 * (occ - free) / (occ_th -
+free)`` truncated (``scale``, map_server 1.17.1 and later, where a fully
+transparent pixel stays -1); ``raw`` copies ``c`` into the cell. Image row 0
+becomes the top map row.
 """
 
 from __future__ import annotations
@@ -71,13 +72,25 @@ def _map_paths(base: str | Path) -> tuple[Path, Path]:
     return base.with_name(base.name + ".pgm"), base.with_name(base.name + ".yaml")
 
 
-def map_to_pixels(grid: GridMap) -> np.ndarray:
-    """The PGM pixels ``map_saver`` writes for a grid (rows top-down)."""
-    data = grid.data
+def cells_to_pixels(
+    cells: np.ndarray, occupied_min: int = SAVER_OCCUPIED_MIN, free_max: int = SAVER_FREE_MAX
+) -> np.ndarray:
+    """The PGM pixels ``map_saver`` writes for ``(height, width)`` cells (row 0 at the origin).
+
+    As ``map_saver --occ OCCUPIED_MIN --free FREE_MAX``: a cell in ``0..free_max`` is
+    254, else one ``>= occupied_min`` is 0, anything else 205. Rows come out top-down.
+    """
+    data = np.asarray(cells, dtype=np.int8)
     pixels = np.full(data.shape, PIXEL_UNKNOWN, dtype=np.uint8)
-    pixels[(data >= 0) & (data <= SAVER_FREE_MAX)] = PIXEL_FREE
-    pixels[(data >= SAVER_OCCUPIED_MIN) & (data <= 100)] = PIXEL_OCCUPIED
+    free = (data >= 0) & (data <= free_max)
+    pixels[free] = PIXEL_FREE
+    pixels[~free & (data >= occupied_min)] = PIXEL_OCCUPIED
     return pixels[::-1]
+
+
+def map_to_pixels(grid: GridMap) -> np.ndarray:
+    """The PGM pixels ``map_saver`` writes for a grid (rows top-down), default thresholds."""
+    return cells_to_pixels(grid.data)
 
 
 def save_map(grid: GridMap, base: str | Path) -> tuple[Path, Path]:
@@ -163,7 +176,7 @@ def read_map_metadata(path: str | Path) -> MapMetadata:
     try:
         if not isinstance(origin, list | tuple) or len(origin) != 3:
             raise ValueError
-        origin_xyz = tuple(float(v) for v in origin)
+        origin_xyz = (float(origin[0]), float(origin[1]), float(origin[2]))
     except (TypeError, ValueError):
         raise MapFileError(f"'origin' must be [x, y, yaw], got {origin!r}", path=path) from None
     mode = str(doc.get("mode", "trinary"))
@@ -195,7 +208,7 @@ def pixels_to_map(pixels: np.ndarray, has_alpha: bool, meta: MapMetadata) -> np.
     values = np.full(colour.shape, -1, dtype=np.int16)
     if meta.mode == "scale":
         ratio = (occ - meta.free_thresh) / (meta.occupied_thresh - meta.free_thresh)
-        scaled = np.trunc(99.0 * ratio).astype(np.int16)
+        scaled = np.trunc(1.0 + 98.0 * ratio).astype(np.int16)
         values = np.where(alpha < 1.0, values, scaled)
     values[occ < meta.free_thresh] = 0
     values[occ > meta.occupied_thresh] = 100
