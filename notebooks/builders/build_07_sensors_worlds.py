@@ -191,11 +191,16 @@ server.run(until=world.time + 0.1)  # the plugins publish once, so the recorder 
 print("recording:", recorder.poll_topics())
 
 
+drive_plugin = next(p for p in server.plugins if type(p).__name__ == "GazeboRosDiffDrive")
+
+
 def drive(forward, turn, seconds):
     twist = Twist()
     twist.linear.x, twist.angular.z = forward, turn
     cmd_vel.publish(twist)
-    time.sleep(0.1)  # the drive's subscription runs on the bus's threads
+    deadline = time.monotonic() + 5.0
+    while drive_plugin.command != (forward, turn) and time.monotonic() < deadline:
+        time.sleep(0.01)  # the drive's subscription runs on the bus's threads: wait for it
     server.run(until=world.time + seconds)
 
 
@@ -348,14 +353,16 @@ print(f"point cloud: {cloud.width * cloud.height} points")
 code("""
 from workbench.rviz import RViz
 
-rviz = RViz(bus, fixed_frame="odom", displays=["Grid", "TF", "RobotModel", "LaserScan"])
-rviz.add_display("PointCloud2", topic="/depth_camera/points", size=0.02)
-server.run(until=world.time + 0.1)  # a fresh scan and tf for the new subscribers
+rviz = RViz(bus, fixed_frame="odom", displays=["Grid", "TF", "RobotModel"])
+scan_display = rviz.add_display("LaserScan", topic="/scan")
+cloud_display = rviz.add_display("PointCloud2", topic="/depth_camera/points", size=0.02)
+server.run(until=world.time + 0.1)  # fresh scans and tf for the new subscribers
 cloud.header.stamp = laser.latest_message.header.stamp
 cloud_publisher.publish(cloud)
 rviz.spin(0.5 if SHORT else 2.0)
 for name, status in rviz.statuses().items():
     print(f"{name:12s} {status}")
+print(f"drawn: {scan_display.drawn} scans, {cloud_display.drawn} point cloud(s)")
 print("snapshot:", rviz.save_html(OUT / "sensors_rviz.html"))
 rviz
 """)

@@ -31,6 +31,8 @@ def test_sensors_notebook_runs(run_notebook, tmp_path):
     assert "depth image 80 x 60" in text and "point cloud: 4800 points" in text
     assert re.search(r"LaserScan\s+\{'Topic': 'OK'\}", text), text
     assert re.search(r"PointCloud2\s+\{'Topic': 'OK'\}", text), text
+    scans, clouds = map(int, re.search(r"drawn: (\d+) scans, (\d+) point cloud", text).groups())
+    assert scans >= 1 and clouds == 1
     assert (out / "sensors_rviz.html").stat().st_size > 0
     counts = {t: int(n) for t, n in re.findall(r"bag: (/\w+) (\d+) messages", text)}
     assert set(counts) == {"/scan", "/odom", "/tf"} and min(counts.values()) > 0
