@@ -130,7 +130,8 @@ md("""
 ## 2. Start the simulator with that world and spawn `custom_bot`
 
 `build_server` loads the world file as `gzserver` does; the Gazebo ROS API answers the
-`/gazebo/...` services on the bus. `spawn_model` sends `urdf/custom_bot.urdf` to
+`/gazebo/...` services on the bus; `fast=True` (`workbench sim --fast`) steps as fast as it
+can instead of at real time. `spawn_model -z 0.1` (the wheels start just above the floor) sends `urdf/custom_bot.urdf` to
 `/gazebo/spawn_urdf_model` with its own namespace `/` (so the drive listens on `/cmd_vel`),
 then, for `-J front_caster_of_wheel_joint 3.1416`, turns the caster behind its pivot with
 `/gazebo/set_model_configuration`. The URDF's `<gazebo>` blocks start three plugins: the
