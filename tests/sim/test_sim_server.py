@@ -210,3 +210,21 @@ def test_an_unknown_gazebo_library_is_one_warning_and_the_model_still_spawns(cap
     assert len(warnings) == 1, warnings
     assert "model 'crate'" in warnings[0] and "libgazebo_ros_fancy.so" in warnings[0]
     assert server.plugins == []
+
+
+def test_a_model_spawned_into_the_ground_is_lifted_to_rest_on_it():
+    """spawn_model without -z puts custom_bot's wheels 8.5 cm into the ground; Gazebo pushes
+    it out at once, and so does the server (a stiff point contact would hold the wheels)."""
+    from workbench.paths import urdf_dir
+    from workbench.sim.loading import sim_model_from_xml
+
+    server = _server()
+    text = (urdf_dir() / "custom_bot.urdf").read_text()
+    robot = sim_model_from_xml(text, name="custom_bot", source="test", base_dir=urdf_dir())
+    server.spawn(robot, [0.0, 0.0, 0.0])
+    assert server.world.ground_penetration("custom_bot") == 0.0
+    assert server.world.get_model_pose("custom_bot").translation()[2] == pytest.approx(
+        0.0855, abs=0.002
+    )
+    server.spawn(box_model("crate"), [1.0, 0.0, 0.5])  # above the ground: left where it is
+    assert server.world.get_model_pose("crate").translation()[2] == pytest.approx(0.5)

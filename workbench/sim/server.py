@@ -302,6 +302,8 @@ class SimServer:
 
         def work() -> None:
             self.world.add_model(model, X_WM, joint_positions=joint_positions)
+            if not model.static:
+                self.world.lift_out_of_ground(model.name)
             for warning in model.warnings:
                 _LOG.warning("%s", warning)
             self._after_rebuild()

@@ -620,6 +620,43 @@ class World:
             return X_WR
         return X_WR.multiply(placed.X_MR.inverse())
 
+    def ground_penetration(self, name: str) -> float:
+        """How deep model ``name``'s collision shapes reach into the ground now, m (0: none)."""
+        self._require_built("ground_penetration")
+        if self._ground_z is None:
+            return 0.0
+        sg_context = self.scene_graph.GetMyContextFromRoot(self.context)
+        query = self.scene_graph.get_query_output_port().Eval(sg_context)
+        inspector = query.inspector()
+        bodies = {int(i) for i in self.plant.GetBodyIndices(self.model_instance(name))}
+        deepest = 0.0
+        for pair in query.ComputePointPairPenetration():
+            names = {inspector.GetName(pair.id_A), inspector.GetName(pair.id_B)}
+            if GROUND_NAME not in names:
+                continue
+            for geometry in (pair.id_A, pair.id_B):
+                body = self.plant.GetBodyFromFrameId(inspector.GetFrameId(geometry))
+                if body is not None and int(body.index()) in bodies:
+                    deepest = max(deepest, float(pair.depth))
+        return deepest
+
+    def lift_out_of_ground(self, name: str, clearance: float = 0.0005) -> float:
+        """Raise a free model that was placed partly below the ground until it just clears it.
+
+        Gazebo pushes such a model out at once (ODE corrects penetration at up to 100 m/s);
+        a stiff point contact would lift it slowly and hold its wheels. Returns the lift, m.
+        """
+        depth = self.ground_penetration(name)
+        if depth <= 0.0 or not self.root_body(name).is_floating_base_body():
+            return 0.0
+        X_WM = self.get_model_pose(name)
+        lifted = X_WM.translation() + np.array([0.0, 0.0, depth + clearance])
+        from pydrake.math import RigidTransform
+
+        v, w = self.get_model_twist(name)
+        self.set_model_state(name, RigidTransform(X_WM.rotation(), lifted), v, w)
+        return depth + clearance
+
     def get_model_twist(self, name: str) -> tuple[np.ndarray, np.ndarray]:
         """``(v_W, w_W)``: velocity of the model's root link origin and its angular velocity in W."""
         self._require_built("get_model_twist")
