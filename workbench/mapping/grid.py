@@ -260,8 +260,12 @@ class OccupancyGrid:
         if not (add_lo.any() or add_hi.any()):
             return False
         # Grow by at least a quarter of the size, so a moving robot does not regrow every scan.
-        grow_lo = np.where(add_lo > 0, np.maximum(add_lo, np.array([self.width, self.height]) // 4), 0)
-        grow_hi = np.where(add_hi > 0, np.maximum(add_hi, np.array([self.width, self.height]) // 4), 0)
+        grow_lo = np.where(
+            add_lo > 0, np.maximum(add_lo, np.array([self.width, self.height]) // 4), 0
+        )
+        grow_hi = np.where(
+            add_hi > 0, np.maximum(add_hi, np.array([self.width, self.height]) // 4), 0
+        )
         width = self.width + int(grow_lo[0] + grow_hi[0])
         height = self.height + int(grow_lo[1] + grow_hi[1])
         if float(width) * float(height) > MAX_CELLS:

@@ -165,7 +165,11 @@ class Slam:
         """
         cfg = self.config
         res = cfg.resolution if resolution is None else float(resolution)
-        if self._grid is None or self._grid_version != self._version or self._grid.resolution != res:
+        if (
+            self._grid is None
+            or self._grid_version != self._version
+            or self._grid.resolution != res
+        ):
             first = self.graph.nodes[0] if len(self.graph.nodes) else np.zeros(3)
             half = 0.5 * cfg.map_size
             low = np.floor((first[:2] - half) / res) * res
@@ -327,7 +331,9 @@ class Slam:
             return pose
         node = self.graph.add_node(pose)
         self._add_frame(index, scan, odom)
-        self.graph.add_edge(self._sequential_edge(last, node, rel, odom, result if matched else None))
+        self.graph.add_edge(
+            self._sequential_edge(last, node, rel, odom, result if matched else None)
+        )
         self._anchor.append(node)
         self._offset.append(np.zeros(3))
         outcome = close_loop(self.graph, node, self._loop_match, cfg)

@@ -87,7 +87,12 @@ def check_and_add(
         if d2 > config.loop_gate:
             return LoopOutcome(False, "gate", candidate, match, d2)
         edge = Edge(
-            candidate, node, z, np.array(config.loop_sigma), loop=True, information=information(measured)
+            candidate,
+            node,
+            z,
+            np.array(config.loop_sigma),
+            loop=True,
+            information=information(measured),
         )
     before = graph.nodes.copy()
     graph.add_edge(edge)
@@ -99,7 +104,9 @@ def check_and_add(
     return LoopOutcome(True, "accepted", candidate, match, d2)
 
 
-def search_window(graph: PoseGraph, candidate: int, node: int, config: SlamConfig) -> tuple[float, float]:
+def search_window(
+    graph: PoseGraph, candidate: int, node: int, config: SlamConfig
+) -> tuple[float, float]:
     """Translation and rotation half-widths covering three std devs of the pair's uncertainty."""
     cov = graph.relative_covariance(candidate, node)
     linear = 3.0 * float(np.sqrt(max(np.linalg.eigvalsh(cov[:2, :2]).max(), 0.0)))

@@ -245,7 +245,10 @@ def _jacobian(x, i, j, z, w, n) -> sparse.csr_matrix:
     return sparse.csr_matrix(
         (
             np.concatenate([ji.reshape(m, 9).ravel(), jj.reshape(m, 9).ravel()]),
-            (np.concatenate([rows.ravel(), rows.ravel()]), np.concatenate([cols_i.ravel(), cols_j.ravel()])),
+            (
+                np.concatenate([rows.ravel(), rows.ravel()]),
+                np.concatenate([cols_i.ravel(), cols_j.ravel()]),
+            ),
         ),
         shape=(3 * m, 3 * n),
     )

@@ -91,9 +91,7 @@ def build_map(
             beyond it, and no-return readings (at or beyond the scan's ``max_range``,
             or infinite), mark free space up to it and never an obstacle.
     """
-    ends = [
-        transform_points(p, free_ends(s, max_range)) for s, p in zip(scans, poses, strict=True)
-    ]
+    ends = [transform_points(p, free_ends(s, max_range)) for s, p in zip(scans, poses, strict=True)]
     ends.append(np.asarray(poses)[:, :2])
     grid = OccupancyGrid.covering(np.concatenate(ends), resolution, margin=1.0)
     for scan, pose in zip(scans, poses, strict=True):

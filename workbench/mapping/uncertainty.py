@@ -65,12 +65,13 @@ def score_surface_covariance(
     rows, cols = field.shape
     iu = np.floor(u).astype(np.int64)
     iv = np.floor(v).astype(np.int64)
-    # Log-likelihood table over the padded field, so that no index needs clipping.
+    # Log-likelihood table over the padded field (indices outside it are clipped onto
+    # its zero border).
     table = np.log(np.pad(field.fine, k + 1).astype(float) + floor)
     iu = np.clip(iu + k + 1, 0, cols + 2 * k + 1)
     iv = np.clip(iv + k + 1, 0, rows + 2 * k + 1)
-    du, dv = np.meshgrid(offsets, offsets, indexing="ij")
-    du, dv = du.reshape(-1), dv.reshape(-1)
+    grid_u, grid_v = np.meshgrid(offsets, offsets, indexing="ij")
+    du, dv = grid_u.reshape(-1), grid_v.reshape(-1)
     # (angles, offsets): summed log-likelihood of the points at each lattice pose.
     lik = np.empty((len(dthetas), len(du)))
     lo_u, hi_u = 0, table.shape[1] - 1
