@@ -79,6 +79,11 @@ def test_max_range_readings_never_mark_an_obstacle():
         iy, ix = np.nonzero(grid.probabilities() > 0.6)
         centres = grid.to_map().cell_to_world(np.column_stack([ix, iy]))
         assert _segment_distance(centres, world.segments).max() < 0.1
+    # Readings beyond the sensor's range (error codes such as a SICK's 81.83 m) mark nothing.
+    r = np.where(ranges >= 30.0, 81.83, ranges)
+    grid = build_map([Scan(0.0, r, angles, pose, max_range=81.0)], pose[None], 0.05)
+    (ax, ay), _ = grid.to_map().world_to_cell(np.array([[35.0, 1.0], [41.0, 1.0]]))
+    assert ax >= grid.width or not grid.observed[ay, ax]
 
 
 def _corridor_field():

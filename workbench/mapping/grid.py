@@ -196,10 +196,11 @@ class OccupancyGrid:
         Every cell a beam passes through gets a miss, the cell where it ends a
         hit (a cell both passed and hit in the same scan counts as hit). Beams
         below or at ``min_range`` or NaN mark nothing. Beams at or beyond
-        ``max_range`` or infinite ("no return") mark nothing unless
-        ``free_range`` is given: then they, and every beam longer than
-        ``free_range``, mark free space up to ``free_range`` and no hit (as
-        GMapping's ``maxUrange``).
+        ``max_range`` or infinite mark nothing unless ``free_range`` is given:
+        then beams reading ``max_range`` (within 1 cm) or +inf ("no return"),
+        and every beam longer than ``free_range`` but short of ``max_range``,
+        mark free space up to ``free_range`` and no hit (as GMapping's
+        ``maxUrange``); beams beyond ``max_range`` (error codes) mark nothing.
 
         Args:
             pose: Sensor pose ``(x, y, theta)`` in the map frame (m, rad).
@@ -215,7 +216,9 @@ class OccupancyGrid:
             ok = np.isfinite(ranges) & (ranges > min_range) & (ranges < max_range)
             hit = ok.copy()
             if free_range is not None:
-                no_return = (ranges >= max_range) | (ranges == np.inf)
+                # At the sensor's maximum (within a centimetre) or +inf: no return. Beyond
+                # it: an error code (a SICK's 81.83 m "dazzled"), which marks nothing.
+                no_return = (np.abs(ranges - max_range) <= 0.01) | (ranges == np.inf)
                 hit &= ranges < free_range
                 ok = (ok | no_return) & ~np.isnan(ranges) & (ranges > min_range)
                 ranges = np.where(hit, ranges, min(free_range, max_range))

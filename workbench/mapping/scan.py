@@ -54,10 +54,11 @@ class Scan:
 
 def free_ends(scan: Scan, max_range: float) -> np.ndarray:
     """Sensor-frame points ``(N, 2)`` where each beam that marks a map stops: its reading, or
-    ``max_range`` for longer and no-return (infinite) readings; NaN and too-short ones are left out."""
+    ``max_range`` for longer and no-return (infinite) readings; NaN, too short and beyond the
+    scan's own ``max_range`` (error codes) are left out."""
     r = np.asarray(scan.ranges, dtype=float)
     with np.errstate(invalid="ignore"):
-        ok = ~np.isnan(r) & (r > scan.min_range)
+        ok = ~np.isnan(r) & (r > scan.min_range) & ((r <= scan.max_range + 0.01) | (r == np.inf))
     r = np.minimum(np.where(np.isfinite(r), r, max_range), max_range)[ok]
     a = scan.angles[ok]
     return np.stack([r * np.cos(a), r * np.sin(a)], axis=1)

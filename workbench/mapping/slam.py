@@ -88,8 +88,9 @@ def build_map(
         poses: Sensor pose per scan ``(N, 3)`` (m, rad).
         resolution: Cell size (m).
         max_range: The usable range (GMapping's ``maxUrange``, m): readings at or
-            beyond it, and no-return readings (at or beyond the scan's ``max_range``,
-            or infinite), mark free space up to it and never an obstacle.
+            beyond it, and no-return readings (the scan's ``max_range`` or +inf), mark
+            free space up to it and never an obstacle; readings beyond the scan's
+            ``max_range`` (error codes such as a SICK's 81.83 m) mark nothing.
     """
     ends = [transform_points(p, free_ends(s, max_range)) for s, p in zip(scans, poses, strict=True)]
     ends.append(np.asarray(poses)[:, :2])
