@@ -16,7 +16,18 @@ at least ``D`` metres further along the reference path, the error of the
 estimated relative pose ``x_i^-1 x_j`` against the reference's, reported as
 mean ± std of its translation (m) and rotation (deg).
 
-Run:  python benchmarks/slam.py [--log PATH] [--quick] [--seeds N]
+The simulated corridor log (``workbench.mapping.corridors``: a ring of long
+2 m corridors driven twice, 360-beam scans with no-return readings,
+odometry with a few percent of scale and heading error) is run next to it
+with its own seeds, its true poses as the reference. For it the table adds
+CPU time and peak memory (``tracemalloc``), and the incremental API's cost
+per scan at live settings (a 5 Hz 360-beam and a 40 Hz 720-beam laser,
+scans matched only every ``linear_update`` m or ``angular_update`` rad).
+
+MRPT's icp-slam and rbpf-slam are not run: see the project's notes on the
+rawlog format they need.
+
+Run:  python benchmarks/slam.py [--log PATH] [--quick] [--seeds N] [--corridor-seeds N]
 """
 
 from __future__ import annotations
@@ -25,6 +36,7 @@ import argparse
 import json
 import sys
 import time
+import tracemalloc
 from pathlib import Path
 
 import numpy as np
@@ -32,7 +44,8 @@ from machine import describe  # noqa: E402
 from scipy.spatial import cKDTree
 
 from workbench.errors import WorkbenchError
-from workbench.mapping import LikelihoodField, SlamConfig, build_map, read_log, run_slam
+from workbench.mapping import LikelihoodField, Slam, SlamConfig, build_map, read_log, run_slam
+from workbench.mapping.corridors import corridor_log
 from workbench.mapping.evaluate import (
     NOISE_LEVELS,
     noisy_odometry,
@@ -106,7 +119,14 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--quick", action="store_true", help="one seed, first 300 scans")
     parser.add_argument("--levels", default="low,middle,high", help="comma-separated levels")
     parser.add_argument("--out", type=Path, default=HERE / "results" / "slam.json")
+    parser.add_argument("--corridor-seeds", type=int, default=3, help="corridor log seeds")
+    parser.add_argument("--only", choices=("intel", "corridor"), help="run one log only")
     args = parser.parse_args(argv)
+    if args.only == "corridor":
+        corridor = run_corridor(args.corridor_seeds, args.out)
+        args.out.parent.mkdir(parents=True, exist_ok=True)
+        args.out.with_name("slam_corridor.json").write_text(json.dumps(corridor, indent=1))
+        return 0
     try:
         log = read_log(args.log)
     except WorkbenchError as error:
@@ -197,7 +217,109 @@ def main(argv: list[str] | None = None) -> int:
         )
     )
     print(f"\nwrote {args.out}")
+    if args.only != "intel":
+        corridor = run_corridor(1 if args.quick else args.corridor_seeds, args.out)
+        args.out.with_name("slam_corridor.json").write_text(json.dumps(corridor, indent=1))
+        print(f"wrote {args.out.with_name('slam_corridor.json')}")
     return 0
+
+
+def measured(function, *args, **kwargs):
+    """``function(*args, **kwargs)``, its CPU seconds and its peak traced memory (MB)."""
+    tracemalloc.start()
+    cpu = time.process_time()
+    value = function(*args, **kwargs)
+    cpu = time.process_time() - cpu
+    peak = tracemalloc.get_traced_memory()[1] / 1e6
+    tracemalloc.stop()
+    return value, cpu, peak
+
+
+def live_cost(seed: int, beams: int, rate: float, speed: float, config: SlamConfig) -> dict:
+    """Milliseconds per scan of the incremental API on a corridor log at a live scan rate."""
+    log = corridor_log(seed, beams=beams, step=speed / rate, rate=rate)
+    slam = Slam(config)
+    times = []
+    for scan in log.scans:
+        start = time.process_time()
+        slam.add_scan(scan)
+        times.append(1000.0 * (time.process_time() - start))
+    t = np.array(times)
+    return {
+        "beams": beams,
+        "rate_hz": rate,
+        "speed_m_s": speed,
+        "scans": len(t),
+        "matched": int(np.isfinite(slam.scores).sum()),
+        "ms_mean": float(t.mean()),
+        "ms_p99": float(np.percentile(t, 99)),
+        "ms_max": float(t.max()),
+        "budget_ms": 1000.0 / rate,
+        "ate": ate(slam.poses(), log.truth),
+    }
+
+
+def run_corridor(seeds: int, out: Path) -> dict:
+    """Workbench, dead reckoning and scan-to-scan ICP on the corridor log, per seed."""
+    print("\ncorridor log (workbench.mapping.corridors), 360 beams, 30 m range, two laps")
+    rows = []
+    for seed in range(seeds):
+        log = corridor_log(seed)
+        odom, truth = log.odometry, log.truth
+        result, cpu, peak = measured(run_slam, log.scans)
+        icp, icp_cpu, icp_peak = measured(run_icp, log.scans, odom)
+        for method, est, c, m in (
+            ("workbench", result.poses, cpu, peak),
+            ("dead reckoning", odom, 0.0, 0.0),
+            ("scan-to-scan ICP", icp, icp_cpu, icp_peak),
+        ):
+            row = {"seed": seed, "method": method, "ate": ate(est, truth), "cpu_s": c, "peak_mb": m}
+            for d in RELATION_DISTANCES:
+                row[f"rel_{d:g}m"] = relative_error(est, truth, relations(truth, d))
+            rows.append(row)
+        if seed == 0:
+            grid = build_map(log.scans, result.poses, 0.05).to_map()
+            save_png(grid, out.with_name("slam_corridor.png"), [(result.poses, (220, 30, 30))])
+        print(
+            f"  seed {seed} ({len(log.scans)} scans, odometry errors {log.errors}): "
+            f"ATE {rows[-3]['ate']:.3f} m, {cpu:.1f} s CPU",
+            flush=True,
+        )
+    print(
+        f"{'method':18} {'ATE m (median)':>14} {'rel 1m m':>9} {'rel 1m deg':>10} {'CPU s':>7} {'peak MB':>8}"
+    )
+    summary = []
+    for method in ("workbench", "dead reckoning", "scan-to-scan ICP"):
+        sel = [r for r in rows if r["method"] == method]
+        entry = {
+            "method": method,
+            "ate_median": float(np.median([r["ate"] for r in sel])),
+            "ate_max": float(np.max([r["ate"] for r in sel])),
+            "rel_1m_trans": float(np.mean([r["rel_1m"]["trans_mean"] for r in sel])),
+            "rel_1m_rot": float(np.mean([r["rel_1m"]["rot_mean"] for r in sel])),
+            "cpu_s": float(np.mean([r["cpu_s"] for r in sel])),
+            "peak_mb": float(np.max([r["peak_mb"] for r in sel])),
+        }
+        summary.append(entry)
+        print(
+            f"{method:18} {entry['ate_median']:14.3f} {entry['rel_1m_trans']:9.3f} "
+            f"{entry['rel_1m_rot']:10.2f} {entry['cpu_s']:7.1f} {entry['peak_mb']:8.0f}"
+        )
+    live = SlamConfig(linear_update=0.25, angular_update=0.25)
+    costs = [live_cost(0, 360, 5.0, 0.5, live), live_cost(0, 720, 40.0, 0.5, live)]
+    for c in costs:
+        print(
+            f"live: {c['beams']} beams at {c['rate_hz']:g} Hz, {c['speed_m_s']} m/s: "
+            f"{c['ms_mean']:.1f} ms/scan mean, p99 {c['ms_p99']:.0f} ms, max {c['ms_max']:.0f} ms "
+            f"(budget {c['budget_ms']:.0f} ms), {c['matched']}/{c['scans']} matched, "
+            f"ATE {c['ate']:.3f} m"
+        )
+    return {
+        "rows": rows,
+        "summary": summary,
+        "live": costs,
+        "machine": describe(("numpy", "scipy")),
+    }
 
 
 def print_table(rows) -> None:

@@ -15,7 +15,7 @@ from workbench.mapping.mapfile import MapMetadata, load_map, read_map_metadata, 
 from workbench.mapping.matcher import MatchResult, match_scan
 from workbench.mapping.posegraph import Edge, PoseGraph
 from workbench.mapping.scan import LaserLog, Scan
-from workbench.mapping.slam import SlamConfig, SlamResult, build_map, run_slam
+from workbench.mapping.slam import Slam, SlamConfig, SlamResult, build_map, run_slam
 
 __all__ = [
     "Edge",
@@ -29,6 +29,7 @@ __all__ = [
     "OccupancyGrid",
     "PoseGraph",
     "Scan",
+    "Slam",
     "SlamConfig",
     "SlamResult",
     "build_map",

@@ -41,3 +41,10 @@ def transform_points(pose: np.ndarray, points: np.ndarray) -> np.ndarray:
     out[:, 0] = pose[0] + c * points[:, 0] - s * points[:, 1]
     out[:, 1] = pose[1] + s * points[:, 0] + c * points[:, 1]
     return out
+
+
+def rotated_points(points: np.ndarray, thetas: np.ndarray) -> np.ndarray:
+    """Points ``(N, 2)`` rotated by each angle: ``(K, N, 2)``."""
+    c, s = np.cos(thetas)[:, None], np.sin(thetas)[:, None]
+    x, y = points[None, :, 0], points[None, :, 1]
+    return np.stack([c * x - s * y, s * x + c * y], axis=-1)

@@ -189,13 +189,18 @@ class OccupancyGrid:
         *,
         max_range: float = np.inf,
         min_range: float = 0.0,
+        free_range: float | None = None,
     ) -> None:
         """Update the grid with one scan taken by a sensor at ``pose``.
 
         Every cell a beam passes through gets a miss, the cell where it ends a
         hit (a cell both passed and hit in the same scan counts as hit). Beams
-        at or beyond ``max_range``, below or at ``min_range``, or not finite
-        mark nothing.
+        below or at ``min_range`` or NaN mark nothing. Beams at or beyond
+        ``max_range`` or infinite mark nothing unless ``free_range`` is given:
+        then beams reading ``max_range`` (within 1 cm) or +inf ("no return"),
+        and every beam longer than ``free_range`` but short of ``max_range``,
+        mark free space up to ``free_range`` and no hit (as GMapping's
+        ``maxUrange``); beams beyond ``max_range`` (error codes) mark nothing.
 
         Args:
             pose: Sensor pose ``(x, y, theta)`` in the map frame (m, rad).
@@ -203,14 +208,24 @@ class OccupancyGrid:
             angles: Beam directions in the sensor frame (rad), same length.
             max_range: Readings ``>= max_range`` mean "no return".
             min_range: Readings ``<= min_range`` are invalid.
+            free_range: Longest free-space trace (m); None: no-return beams mark nothing.
         """
         ranges = np.asarray(ranges, dtype=float)
         angles = np.asarray(angles, dtype=float)
         with np.errstate(invalid="ignore"):
             ok = np.isfinite(ranges) & (ranges > min_range) & (ranges < max_range)
+            hit = ok.copy()
+            if free_range is not None:
+                # At the sensor's maximum (within a centimetre) or +inf: no return. Beyond
+                # it: an error code (a SICK's 81.83 m "dazzled"), which marks nothing.
+                no_return = (np.abs(ranges - max_range) <= 0.01) | (ranges == np.inf)
+                hit &= ranges < free_range
+                ok = (ok | no_return) & ~np.isnan(ranges) & (ranges > min_range)
+                ranges = np.where(hit, ranges, min(free_range, max_range))
         if not ok.any():
             return
         r = ranges[ok]
+        ends_hit = hit[ok]
         direction = angles[ok] + pose[2]
         ends = np.stack([pose[0] + r * np.cos(direction), pose[1] + r * np.sin(direction)], 1)
         # Sample each beam every half cell from the sensor up to (not including) its end.
@@ -220,7 +235,7 @@ class OccupancyGrid:
         t = k / steps[beam]
         samples = pose[:2] + (ends[beam] - pose[:2]) * t[:, None]
         free = self._flat_index(samples)
-        hits = self._flat_index(ends)
+        hits = self._flat_index(ends[ends_hit])
         free = np.setdiff1d(free, hits)
         hits = np.unique(hits)
         flat_lo = self.log_odds.reshape(-1)
@@ -230,6 +245,43 @@ class OccupancyGrid:
         np.clip(flat_lo, -self.clamp, self.clamp, out=flat_lo)
         flat_obs[free] = True
         flat_obs[hits] = True
+
+    def grow_to(self, points: np.ndarray, margin: float = 1.0) -> bool:
+        """Enlarge the grid (keeping its cells) so that it covers ``points`` ``(N, 2)`` plus
+        ``margin`` m; only for grids whose origin has no rotation. Returns whether it grew."""
+        points = np.asarray(points, dtype=float).reshape(-1, 2)
+        points = points[np.all(np.isfinite(points), axis=1)]
+        if len(points) == 0:
+            return False
+        if self.origin[2] != 0.0:
+            raise MappingError("only an axis-aligned grid can grow")
+        res = self.resolution
+        lo_cells = np.floor((points.min(axis=0) - margin - self.origin[:2]) / res).astype(int)
+        hi_cells = np.ceil((points.max(axis=0) + margin - self.origin[:2]) / res).astype(int)
+        add_lo = np.maximum(-lo_cells, 0)  # (x, y) cells to add below
+        add_hi = np.maximum(hi_cells - np.array([self.width, self.height]), 0)
+        if not (add_lo.any() or add_hi.any()):
+            return False
+        # Grow by at least a quarter of the size, so a moving robot does not regrow every scan.
+        grow_lo = np.where(
+            add_lo > 0, np.maximum(add_lo, np.array([self.width, self.height]) // 4), 0
+        )
+        grow_hi = np.where(
+            add_hi > 0, np.maximum(add_hi, np.array([self.width, self.height]) // 4), 0
+        )
+        width = self.width + int(grow_lo[0] + grow_hi[0])
+        height = self.height + int(grow_lo[1] + grow_hi[1])
+        if float(width) * float(height) > MAX_CELLS:
+            raise MappingError(f"the map would need {width} x {height} cells")
+        log_odds = np.zeros((height, width), dtype=np.float32)
+        observed = np.zeros((height, width), dtype=bool)
+        rows = slice(int(grow_lo[1]), int(grow_lo[1]) + self.height)
+        cols = slice(int(grow_lo[0]), int(grow_lo[0]) + self.width)
+        log_odds[rows, cols] = self.log_odds
+        observed[rows, cols] = self.observed
+        self.log_odds, self.observed = log_odds, observed
+        self.origin = self.origin - np.array([grow_lo[0] * res, grow_lo[1] * res, 0.0])
+        return True
 
     def _flat_index(self, points: np.ndarray) -> np.ndarray:
         ix, iy = _cells(points, self.resolution, self.origin)

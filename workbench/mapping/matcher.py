@@ -17,8 +17,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from workbench.mapping.geometry import transform_points, wrap_angle
+from workbench.mapping.geometry import rotated_points, transform_points, wrap_angle
 from workbench.mapping.likelihood import LikelihoodField
+from workbench.mapping.uncertainty import score_surface_covariance
 
 
 @dataclass
@@ -30,19 +31,23 @@ class MatchResult:
         score: Mean likelihood of the scan's points at ``pose``, in ``[0, 1]``.
         grid_pose: The best pose on the search lattice, before refinement.
         expanded: How many coarse blocks were searched at full resolution.
+        covariance: Covariance ``(3, 3)`` of ``pose`` in the field's frame from the score
+            surface (see :mod:`workbench.mapping.uncertainty`): small across a corridor,
+            huge along it. None when not asked for.
     """
 
     pose: np.ndarray
     score: float
     grid_pose: np.ndarray
     expanded: int
+    covariance: np.ndarray | None = None
 
-
-def rotated_points(points: np.ndarray, thetas: np.ndarray) -> np.ndarray:
-    """Points ``(N, 2)`` rotated by each angle: ``(K, N, 2)``."""
-    c, s = np.cos(thetas)[:, None], np.sin(thetas)[:, None]
-    x, y = points[None, :, 0], points[None, :, 1]
-    return np.stack([c * x - s * y, s * x + c * y], axis=-1)
+    def sigmas(self) -> np.ndarray:
+        """Std devs ``(major m, minor m, theta rad)`` of the covariance (NaN without one)."""
+        if self.covariance is None:
+            return np.full(3, np.nan)
+        values = np.linalg.eigvalsh(self.covariance[:2, :2])
+        return np.sqrt(np.array([values[1], values[0], self.covariance[2, 2]]))
 
 
 def match_scan(
@@ -56,6 +61,7 @@ def match_scan(
     refine: bool = True,
     prior: tuple[float, float] | None = None,
     prior_weight: float = 0.05,
+    covariance: bool = False,
 ) -> MatchResult:
     """Find the sensor pose that best aligns scan points with a likelihood field.
 
@@ -72,6 +78,7 @@ def match_scan(
             ``prior_weight * 0.5 * mahalanobis²`` of the offset from the guess, which keeps
             matches in featureless corridors near the odometry. None: no prior.
         prior_weight: Weight of the prior term, in mean-likelihood units.
+        covariance: Also estimate the covariance of the result from the score surface.
 
     Returns:
         The best pose and its score.
@@ -145,7 +152,8 @@ def match_scan(
         pose = refine_pose(field, points, grid_pose, field.resolution, angular_step)
         pose = refine_to_points(field, points, pose, 2.0 * field.resolution, angular_step)
     score = smooth_score(field, points, pose)
-    return MatchResult(pose, score, grid_pose, expanded)
+    cov = score_surface_covariance(field, points, pose) if covariance and len(points) else None
+    return MatchResult(pose, score, grid_pose, expanded, cov)
 
 
 def refine_to_points(

@@ -52,15 +52,40 @@ class Scan:
         return np.stack([r * np.cos(a), r * np.sin(a)], axis=1)
 
 
-def densify(points: np.ndarray, spacing: float = 0.025, max_gap: float = 0.3) -> np.ndarray:
+def free_ends(scan: Scan, max_range: float) -> np.ndarray:
+    """Sensor-frame points ``(N, 2)`` where each beam that marks a map stops: its reading, or
+    ``max_range`` for longer and no-return (infinite) readings; NaN, too short and beyond the
+    scan's own ``max_range`` (error codes) are left out."""
+    r = np.asarray(scan.ranges, dtype=float)
+    with np.errstate(invalid="ignore"):
+        ok = ~np.isnan(r) & (r > scan.min_range) & ((r <= scan.max_range + 0.01) | (r == np.inf))
+    r = np.minimum(np.where(np.isfinite(r), r, max_range), max_range)[ok]
+    a = scan.angles[ok]
+    return np.stack([r * np.cos(a), r * np.sin(a)], axis=1)
+
+
+def densify(
+    points: np.ndarray,
+    spacing: float = 0.025,
+    max_gap: float = 0.3,
+    bridge: float = 0.0,
+    tolerance: float = 0.03,
+) -> np.ndarray:
     """Points ``(N, 2)`` plus points every ``spacing`` metres between consecutive points closer
     than ``max_gap`` (they most likely lie on one surface), so a sparse far wall becomes a line.
+
+    A longer gap, up to ``bridge`` metres, is filled too when the points either
+    side of it continue its line (within ``tolerance`` m): beams that graze a
+    wall far down a corridor hit it metres apart, and without the line between
+    them a scan would match its own sparse points best at zero motion.
     """
     if len(points) < 2:
         return points
     gaps = np.diff(points, axis=0)
     length = np.hypot(gaps[:, 0], gaps[:, 1])
     fill = (length < max_gap) & (length > spacing)
+    if bridge > max_gap and len(points) >= 4:
+        fill |= _collinear_gaps(points, length, tolerance) & (length < bridge)
     counts = np.where(fill, np.floor(length / spacing).astype(np.int64), 0)
     if counts.sum() == 0:
         return points
@@ -69,6 +94,27 @@ def densify(points: np.ndarray, spacing: float = 0.025, max_gap: float = 0.3) ->
     t = k / (counts[seg] + 1.0)
     extra = points[seg] + gaps[seg] * t[:, None]
     return np.concatenate([points, extra])
+
+
+def _collinear_gaps(points: np.ndarray, length: np.ndarray, tolerance: float) -> np.ndarray:
+    """Per gap ``k`` (between points ``k`` and ``k + 1``): whether points ``k - 1`` and
+    ``k + 2`` lie on its line, before and after it."""
+    out = np.zeros(len(length), dtype=bool)
+    k = np.arange(1, len(points) - 2)
+    a, b = points[k], points[k + 1]
+    unit = (b - a) / np.maximum(length[k], 1e-9)[:, None]
+    before, after = points[k - 1] - a, points[k + 2] - a
+    off_before = np.abs(unit[:, 0] * before[:, 1] - unit[:, 1] * before[:, 0])
+    off_after = np.abs(unit[:, 0] * after[:, 1] - unit[:, 1] * after[:, 0])
+    along_before = (unit * before).sum(1)
+    along_after = (unit * after).sum(1)
+    out[k] = (
+        (off_before < tolerance)
+        & (off_after < tolerance)
+        & (along_before < 0)
+        & (along_after > length[k])
+    )
+    return out
 
 
 @dataclass
