@@ -18,6 +18,7 @@ import numpy as np
 import pytest
 from follower_helpers import ROBOT, FollowRig, counting, follower_model
 
+from workbench.sim import World
 from workbench.sim.gazebo_plugins.follower import (
     MAX_RANGE,
     STOP_DISTANCE,
@@ -212,8 +213,6 @@ def test_after_a_world_reset_it_starts_over(robot, rig_factory):
 
 
 def _spawn_with_follower(model_name: str, caplog) -> SimServer:
-    from workbench.sim import World
-
     model = load_sim_model(model_name)
     model.plugins = [
         PluginSpec(
@@ -238,23 +237,40 @@ def test_without_a_depth_camera_the_plugin_is_not_loaded(caplog):
         server.stop()
 
 
-def test_the_shipped_model_has_the_database_camera(caplog):
-    model = load_sim_model(ROBOT)
-    [(link, xml)] = model.sensors
+def test_the_shipped_model_has_the_database_camera():
     from workbench.sim.sensors import parse_sensor
 
+    model = load_sim_model(ROBOT)
+    [(link, xml)] = model.sensors
     spec = parse_sensor(xml, model=ROBOT, link=link)
     assert (link, spec.type, spec.width, spec.height) == ("depth_camera", "depth", 320, 240)
     assert (spec.horizontal_fov, spec.near, spec.far) == (1.047, 0.1, 100.0)
     assert (spec.update_rate, spec.always_on) == (30.0, True)
     assert [(p.name, p.filename) for p in model.plugins] == [("follower", "libFollowerPlugin.so")]
-    server = SimServer(__import__("workbench.sim", fromlist=["World"]).World(**SERVER_PHYSICS))
+    server = SimServer(World(**SERVER_PHYSICS), real_time_factor=0)
     try:
-        server.real_time_factor = 0
         server.spawn(model, [0.0, 0.0, 0.0])
         [plugin] = server.plugins
         server.run(until=0.1)
         assert plugin.depth.shape == (240, 320) and plugin.nearest is None
-        assert math.isclose(plugin.update_rate, 30.0)
+    finally:
+        server.stop()
+
+
+def test_in_the_follower_world_the_shipped_robot_drives_up_to_the_box():
+    from workbench.sim.gzserver import ServerOptions, build_server
+    from workbench.sim.world_file import shipped_worlds
+
+    assert "follower" in shipped_worlds()
+    world, server, _ = build_server(ServerOptions(world="follower", view=False, fast=True))
+    try:
+        server.spawn(load_sim_model(ROBOT), [0.0, 0.0, 0.0])  # step 29, at the origin
+        [plugin] = server.plugins
+        server.run(until=20.0)  # step 30
+        assert plugin.command == (0.0, 0.0) and plugin.nearest is not None
+        assert 0.3 < plugin.nearest[1] < STOP_DISTANCE
+        X = world.get_model_pose(ROBOT)
+        assert X.translation()[0] > 0.8 and X.rotation().ToRollPitchYaw().yaw_angle() > 0.1
+        assert world.get_model_pose("obstacle").translation()[:2] == pytest.approx([2.65, 0.5])
     finally:
         server.stop()
