@@ -22,6 +22,10 @@ per axis, the child's ``min``/``center``/``max`` of its bounding box goes to
 the parent's, and ``reverse`` puts it on the other side (the child's min at the
 parent's max, or the reverse), i.e. beside the parent.
 
+``add_sensor`` puts a ``<sensor>`` on a link (a depth camera, a laser...), in the
+link for SDF and in a ``<gazebo reference>`` block for URDF; ``add_plugin`` adds a
+model plugin, e.g. Gazebo's follower (``examples/gazebo/build_simpledoifffbot.py``).
+
 URDF has no ball joint: ``to_urdf`` writes a ball joint as a fixed joint and
 makes that link's contact frictionless (``mu1 = mu2 = 0`` in a ``<gazebo>``
 block), the usual way a URDF robot carries a ball caster.
