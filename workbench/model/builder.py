@@ -22,6 +22,10 @@ per axis, the child's ``min``/``center``/``max`` of its bounding box goes to
 the parent's, and ``reverse`` puts it on the other side (the child's min at the
 parent's max, or the reverse), i.e. beside the parent.
 
+``add_sensor`` puts a ``<sensor>`` on a link (a depth camera, a laser...), in the
+link for SDF and in a ``<gazebo reference>`` block for URDF; ``add_plugin`` adds a
+model plugin, e.g. Gazebo's follower (``examples/gazebo/build_simpledoifffbot.py``).
+
 URDF has no ball joint: ``to_urdf`` writes a ball joint as a fixed joint and
 makes that link's contact frictionless (``mu1 = mu2 = 0`` in a ``<gazebo>``
 block), the usual way a URDF robot carries a ball caster.
@@ -39,6 +43,7 @@ from xml.sax.saxutils import quoteattr
 import numpy as np
 
 from workbench.errors import ModelError
+from workbench.model.sensor_element import SensorElement
 
 Pose = tuple[float, float, float, float, float, float]
 _JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "ball")
@@ -88,6 +93,7 @@ class _Link:
     mass: float | None
     inertia: tuple[float, float, float, float, float, float] | None
     shapes: list[_Shape] = field(default_factory=list)
+    sensors: list[SensorElement] = field(default_factory=list)
 
 
 @dataclass
@@ -359,6 +365,41 @@ class ModelBuilder:
         self._links[child].pose = tuple(pose)  # type: ignore[assignment]
         return self
 
+    def add_sensor(
+        self,
+        link: str,
+        name: str,
+        kind: str,
+        *,
+        pose: Pose | tuple[float, ...] = (0.0,) * 6,
+        update_rate: float = 0.0,
+        always_on: bool = False,
+        visualize: bool = False,
+        **settings: Any,
+    ) -> ModelBuilder:
+        """A ``<sensor name type>`` on ``link`` at ``pose`` in the link frame.
+
+        ``settings`` are the type's elements as nested dicts, e.g. for a depth camera
+        ``camera={"horizontal_fov": 1.047, "image": {"width": 320, "height": 240}}``
+        (see :mod:`workbench.model.sensor_element`).
+        """
+        _check_name(name, "sensor")
+        target = self._link(link)
+        if any(s.name == name for s in target.sensors):
+            raise ModelError(f"link '{link}' already has a sensor '{name}'")
+        target.sensors.append(
+            SensorElement(
+                name,
+                kind,
+                _pose(pose, f"sensor '{name}'"),
+                float(update_rate),
+                bool(always_on),
+                bool(visualize),
+                settings,
+            )
+        )
+        return self
+
     def add_plugin(self, name: str, filename: str, **parameters: Any) -> ModelBuilder:
         """A model plugin element: ``<plugin name filename><key>value</key>...``."""
         _check_name(name, "plugin")
@@ -486,6 +527,8 @@ class ModelBuilder:
                             f"        <material><ambient>{rgba}</ambient><diffuse>{rgba}</diffuse></material>"
                         )
                     out.append("      </visual>")
+            for sensor in link.sensors:
+                out += sensor.lines(6)
             out.append("    </link>")
         for joint in self._joints.values():
             out.append(f'    <joint name={quoteattr(joint.name)} type="{_sdf_joint_type(joint)}">')
@@ -583,6 +626,13 @@ class ModelBuilder:
             if joint.damping:
                 out.append(f'    <dynamics damping="{joint.damping:g}"/>')
             out.append("  </joint>")
+        for link in self._links.values():
+            X_FL = _matrix(link.pose) if link.name == root else np.eye(4)
+            for sensor in link.sensors:
+                X = X_FL @ _matrix(sensor.pose)
+                out.append(f"  <gazebo reference={quoteattr(link.name)}>")
+                out += sensor.lines(4, pose=(*X[:3, 3], *_rpy(X[:3, :3])))
+                out.append("  </gazebo>")
         for caster in frictionless:
             out.append(f"  <gazebo reference={quoteattr(caster)}><mu1>0</mu1><mu2>0</mu2></gazebo>")
         if self.static:

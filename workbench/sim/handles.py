@@ -143,6 +143,35 @@ class ModelHandle:
         body = self._world.body(f"{self.name}::{link}")
         return self._world.plant.EvalBodyPoseInWorld(self._context(), body)
 
+    def joints(self) -> list[tuple[str, str]]:
+        """``(name, type)`` of every joint in the model's order (Gazebo's ``Model::GetJoints``);
+        types are Drake's: ``revolute``, ``prismatic``, ``weld`` (fixed), ``ball_rpy``, ..."""
+        plant = self._world.plant
+        return [
+            (plant.get_joint(i).name(), plant.get_joint(i).type_name())
+            for i in plant.GetJointIndices(self._world.model_instance(self.name))
+            if plant.get_joint(i).type_name() not in ("quaternion_floating", "rpy_floating")
+        ]
+
+    def joint_anchor(self, joint: str) -> np.ndarray:
+        """Where a joint is in W, m (Gazebo's ``Joint::Anchor``): its frame on the child link."""
+        item = self._world.joint(self.name, joint)
+        X_WJ = item.frame_on_child().CalcPoseInWorld(self._context())
+        return np.array(X_WJ.translation())
+
+    def link_bounding_box(self, link: str) -> tuple[np.ndarray, np.ndarray]:
+        """``(low, high)``: the box in W around a link's collision shapes now, m
+        (Gazebo's ``Link::BoundingBox``; see :func:`workbench.sim.geometry_bounds.body_bounds`)."""
+        from workbench.sim.geometry_bounds import body_bounds
+
+        body = self._world.body(f"{self.name}::{link}")
+        return body_bounds(self._world, body)
+
+    def sensors(self) -> list[tuple[str, str]]:
+        """``(link, <sensor> XML)`` of the model's sensors, in file order."""
+        placed = self._world.models.get(self.name)
+        return list(placed.model.sensors) if placed is not None else []
+
     def add_velocity_motors(self, limits: Mapping[str, float]) -> None:
         """Drive joints with velocity motors ``{joint: effort limit}`` (Gazebo's
         ``Joint::SetParam("fmax")`` with ``"vel"``; see :mod:`workbench.sim.motors`).

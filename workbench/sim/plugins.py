@@ -77,6 +77,11 @@ BUILTIN_PLUGINS.update(
     }
 )
 
+#: Gazebo's own model plugins (workbench.sim.gazebo_plugins).
+BUILTIN_PLUGINS.update(
+    {"libFollowerPlugin.so": "workbench.sim.gazebo_plugins.follower:FollowerPlugin"}
+)
+
 
 class UnavailablePluginError(SimulationError):
     """A Gazebo plugin library workbench does not provide: the model runs without it."""
