@@ -654,7 +654,7 @@ class World:
         from pydrake.math import RigidTransform
 
         v, w = self.get_model_twist(name)
-        self.set_model_state(name, RigidTransform(X_WM.rotation(), lifted), v, w)
+        self.set_model_state(name, RigidTransform(X_WM.rotation(), lifted), v.tolist(), w.tolist())
         return depth + clearance
 
     def get_model_twist(self, name: str) -> tuple[np.ndarray, np.ndarray]:
