@@ -30,19 +30,28 @@ PARAMS = {
 }
 
 
+#: Mappers started by a test, closed after it.
+STARTED: list[SlamGMapping] = []
+
+
 @pytest.fixture
 def bus():
     bus = Bus()
     bus.params.set("/use_sim_time", True)
     yield bus
     bus.shutdown()
+    for mapper in STARTED:
+        mapper.close()
+    STARTED.clear()
 
 
 def start(bus: Bus, params: dict, argv: tuple[str, ...] = ()) -> SlamGMapping:
     for name, value in params.items():
         bus.params.set(f"/slam_gmapping/{name}", value)
     node = Node("slam_gmapping", bus=bus, argv=list(argv))
-    return SlamGMapping(node, read_params(node))
+    mapper = SlamGMapping(node, read_params(node))
+    STARTED.append(mapper)
+    return mapper
 
 
 def pose_of(t) -> np.ndarray:
