@@ -170,3 +170,36 @@ def test_the_process_stops_cleanly_on_a_signal(tmp_path, sig, status):
             assert "Traceback" not in procs.output(node)
         finally:
             procs.stop_all()
+
+
+def test_the_published_map_covers_gmappings_initial_bounds_and_grows_past_them():
+    from workbench.mapping.grid import OccupancyGrid
+    from workbench.mapping.live_map import gmapping_cells
+
+    grid = OccupancyGrid(40, 20, 0.05, (98.0, -0.5, 0.0))
+    grid.integrate_scan(np.array([99.0, 0.0, 0.0]), np.array([0.52]), np.array([0.0]))
+    cells, origin = gmapping_cells(grid, (-100.0, -100.0, 100.0, 100.0))
+    assert origin == pytest.approx((-100.0, -100.0))
+    assert cells.shape == (4000, 4000)  # GMapping's default -100..100 m at 5 cm
+    row = round((0.0 + 100.0) / 0.05)
+    assert cells[row, round((99.51 + 100.0) / 0.05)] == 100  # the hit
+    assert cells[row, round((99.25 + 100.0) / 0.05)] == 0  # the beam
+    assert cells[0, 0] == -1 and (cells >= 0).sum() == 11
+    grid.grow_to(np.array([[102.0, 0.0]]), margin=0.0)
+    cells, origin = gmapping_cells(grid, (-100.0, -100.0, 100.0, 100.0))
+    assert cells.shape[1] > 4000 and set(np.unique(cells).tolist()) <= {-1, 0, 100}
+
+
+def test_the_shipped_rviz_config_shows_robot_scan_and_map_in_the_map_frame():
+    from process_helpers import REPO
+
+    from workbench.rviz.config import load_config
+
+    config = load_config(REPO / "examples/packages/turtlebot3_slam/rviz/turtlebot3_gmapping.rviz")
+    assert config.fixed_frame == "map" and config.unknown == []
+    shown = {d.class_name: d for d in config.displays if d.enabled}
+    assert {"RobotModel", "LaserScan", "Map"} <= set(shown)
+    assert (
+        shown["LaserScan"].options.get("topic", shown["LaserScan"].options.get("Topic")) == "/scan"
+    )
+    assert shown["Map"].options.get("topic", shown["Map"].options.get("Topic")) == "/map"
