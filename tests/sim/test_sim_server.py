@@ -180,11 +180,11 @@ def test_plugin_files_that_are_missing_empty_or_fail_to_load_are_refused(tmp_pat
 def test_a_simulation_that_blows_up_pauses_with_a_message_and_the_server_lives_on(caplog):
     server = _server((box_model("box"), [0.0, 0.0, 0.05]), (box_model("calm"), [2, 0, 0.05]))
     server.apply_body_wrench("box::body", [0.0, 0.0, 1e305], [0.0, 0.0, 0.0], 0.0, -1.0)
-    timer = threading.Timer(20.0, server.stop)
+    timer = threading.Timer(120.0, server.stop)  # a guard against a hang, not a time limit
     timer.start()
     with caplog.at_level(logging.ERROR, logger="workbench.sim"):
         server.start()
-        deadline = time.monotonic() + 20
+        deadline = time.monotonic() + 120
         while not server.paused and time.monotonic() < deadline:
             time.sleep(0.01)
         server.stop()
