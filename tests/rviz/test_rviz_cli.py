@@ -12,6 +12,7 @@ from pathlib import Path
 
 import pytest
 
+from workbench.bus import CoreError
 from workbench.viz.snapshot import snapshot_paths
 
 CONFIG = """Panels: []
@@ -70,6 +71,27 @@ def _started(args: list[str], uri: str, cwd: Path, log_name: str):
         log.close()
 
 
+def _wait_for_publishers(uri: str, topics: set[str], timeout: float = 120.0) -> None:
+    """Until every topic has a publisher on the core (the programs are up), however busy."""
+    from workbench.bus import Bus
+
+    deadline = time.monotonic() + timeout
+    while True:
+        try:
+            with Bus.connect(uri) as bus:
+                while time.monotonic() < deadline:
+                    graph = bus.graph()
+                    ready = {t for t in topics if t in graph.topics and graph.topics[t].publishers}
+                    if ready == topics:
+                        return
+                    time.sleep(0.2)
+                raise AssertionError(f"no publishers on {sorted(topics - ready)}")
+        except CoreError:
+            if time.monotonic() > deadline:
+                raise
+            time.sleep(0.2)
+
+
 @pytest.mark.multiprocess
 @pytest.mark.slow
 def test_the_manual_programs_draw_in_workbench_rviz(tmp_path, free_uri):
@@ -82,7 +104,10 @@ def test_the_manual_programs_draw_in_workbench_rviz(tmp_path, free_uri):
         _started(["run", "using_markers", "points_and_lines.py"], uri, tmp_path, "lines.log"),
         _started(["run", "using_markers", "basic_controls.py"], uri, tmp_path, "basic.log"),
     ):
-        time.sleep(3)
+        _wait_for_publishers(
+            uri,
+            {"/visualization_marker", "/simple_marker/update", "/basic_controls/update"},
+        )
         done = subprocess.run(
             [sys.executable, "-m", "workbench", "rviz", "-d", "lab.rviz", "--after", "4",
              "--html", "view.html"],
