@@ -232,7 +232,9 @@ code("""
 from workbench.mapping.map_saver_node import MapSaver
 
 saver = MapSaver(Node("map_saver", bus=bus), mapname=str(OUT / "map"))
-print("saved:", saver.wait(timeout=10.0), saver.error or "")
+print("saved:", saver.wait(timeout=10.0))
+if saver.error is not None:
+    print(saver.error)
 for file in saver.files:
     print(f"{file.name}: {file.stat().st_size} bytes")
 print((OUT / "map.yaml").read_text())
@@ -373,8 +375,9 @@ from workbench.rviz import RViz
 rviz = RViz(bus, fixed_frame="map", displays=["Grid", "Map", "RobotModel"])
 rviz.add_display("LaserScan", topic="/scan")
 mapper.update_map()  # a fresh /map for the new subscriber
-server.run(until=world.time + 0.5)  # fresh scans and tf
-rviz.spin(0.5 if SHORT else 2.0)
+for _ in range(5):  # let the simulation go on a little while RViz draws
+    server.run(until=world.time + 0.2)
+    rviz.spin(0.1 if SHORT else 0.4)
 for name, status in rviz.statuses().items():
     print(f"{name:12s}", status)
 print("snapshot:", rviz.save_html(OUT / "slam_rviz.html"))
