@@ -289,7 +289,7 @@ slam_gmapping puts it (`map → base_footprint`), once a simulated second.
 """)
 code("""
 from workbench.mapping import load_map
-from workbench.sim.building import load_plan
+from workbench.sim.building import blocked_cells, load_plan
 
 SCAN_HEIGHT = 0.182  # the burger's base_scan above the floor, m
 plan = load_plan(mapping_dir() / "plans" / "house.yaml")
@@ -297,20 +297,7 @@ plan = load_plan(mapping_dir() / "plans" / "house.yaml")
 
 def true_obstacles(xs, ys):
     \"\"\"Cells (rows along y) where the house has something at the scan's height.\"\"\"
-    gx, gy = np.meshgrid(xs, ys)
-    blocked = np.zeros(gx.shape, dtype=bool)
-    for piece in plan.pieces():
-        x, y, z, yaw = piece.pose
-        if abs(SCAN_HEIGHT - z) > piece.size[2] / 2:
-            continue
-        dx, dy = gx - x, gy - y
-        if piece.shape == "cylinder":
-            blocked |= dx * dx + dy * dy <= piece.radius**2
-            continue
-        c, s = math.cos(yaw), math.sin(yaw)
-        u, v = c * dx + s * dy, -s * dx + c * dy
-        blocked |= (np.abs(u) <= piece.size[0] / 2) & (np.abs(v) <= piece.size[1] / 2)
-    return blocked
+    return blocked_cells(plan.pieces(), xs, ys, (SCAN_HEIGHT, SCAN_HEIGHT))
 
 
 def dilate(mask, cells=1):

@@ -16,7 +16,7 @@ from workbench.bus import Bus, Node
 from workbench.mapping import load_map
 from workbench.msgs.gazebo_msgs import GetModelState
 from workbench.msgs.geometry_msgs import Twist
-from workbench.sim.building import load_plan
+from workbench.sim.building import blocked_cells, load_plan
 from workbench.tf import Buffer, TransformException, TransformListener
 
 pytestmark = [pytest.mark.slow, pytest.mark.multiprocess]
@@ -29,20 +29,8 @@ DRIVE = [(0.0, 0.8, 8.0), (0.2, 0.0, 7.0), (0.0, 0.8, 4.0), (0.2, 0.0, 5.0), (0.
 
 def true_obstacles(xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
     """Cells (rows along y) where the house has something at the scan's height."""
-    gx, gy = np.meshgrid(xs, ys)
-    blocked = np.zeros(gx.shape, dtype=bool)
-    for piece in load_plan(REPO / "mapping" / "plans" / "house.yaml").pieces():
-        x, y, z, yaw = piece.pose
-        if abs(SCAN_HEIGHT - z) > piece.size[2] / 2:
-            continue
-        dx, dy = gx - x, gy - y
-        if piece.shape == "cylinder":
-            blocked |= dx * dx + dy * dy <= piece.radius**2
-            continue
-        c, s = math.cos(yaw), math.sin(yaw)
-        u, v = c * dx + s * dy, -s * dx + c * dy
-        blocked |= (np.abs(u) <= piece.size[0] / 2) & (np.abs(v) <= piece.size[1] / 2)
-    return blocked
+    pieces = load_plan(REPO / "mapping" / "plans" / "house.yaml").pieces()
+    return blocked_cells(pieces, xs, ys, (SCAN_HEIGHT, SCAN_HEIGHT))
 
 
 def dilate(mask: np.ndarray, cells: int) -> np.ndarray:

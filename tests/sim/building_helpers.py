@@ -10,7 +10,7 @@ from typing import Any
 import numpy as np
 
 from workbench.sim import World
-from workbench.sim.building import Piece
+from workbench.sim.building import Piece, blocked_cells
 from workbench.sim.server import SERVER_PHYSICS
 from workbench.sim.world_file import load_world
 
@@ -60,20 +60,7 @@ def occupancy(
     """
     xs = np.arange(low[0] + cell / 2, high[0], cell)
     ys = np.arange(low[1] + cell / 2, high[1], cell)
-    gx, gy = np.meshgrid(xs, ys)
-    blocked = np.zeros(gx.shape, dtype=bool)
-    for piece in pieces:
-        x, y, z, yaw = piece.pose
-        half_z = piece.size[2] / 2
-        if z + half_z < band[0] or z - half_z > band[1]:
-            continue
-        dx, dy = gx - x, gy - y
-        if piece.shape == "cylinder":
-            blocked |= dx * dx + dy * dy <= piece.radius**2
-            continue
-        c, s = np.cos(yaw), np.sin(yaw)
-        u, v = c * dx + s * dy, -s * dx + c * dy
-        blocked |= (np.abs(u) <= piece.size[0] / 2) & (np.abs(v) <= piece.size[1] / 2)
+    blocked = blocked_cells(pieces, xs, ys, band)
     return blocked, xs, ys
 
 

@@ -9,94 +9,19 @@ teardown (SIGINT, then SIGKILL).
 from __future__ import annotations
 
 import os
-import socket
-import subprocess
 import sys
-import time
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
-from typing import Any
 
 import pytest
-
-
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
-
-
-def _wait_port(port: int, timeout: float = 20.0) -> bool:
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        try:
-            with socket.create_connection(("127.0.0.1", port), timeout=0.2):
-                return True
-        except OSError:
-            time.sleep(0.05)
-    return False
-
-
-def wait_for(predicate: Callable[[], Any], timeout: float = 20.0) -> bool:
-    """Poll ``predicate`` until it holds or ``timeout`` seconds pass; its last value."""
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if predicate():
-            return True
-        time.sleep(0.02)
-    return bool(predicate())
+from process_helpers import private_core
+from teleop_helpers import TeleopProcess
 
 
 @pytest.fixture
 def core_uri(tmp_path) -> Iterator[str]:
     """A private ``workbench core`` on a free loopback port; its URI."""
-    port = _free_port()
-    uri = f"tcp/127.0.0.1:{port}"
-    env = dict(os.environ, WORKBENCH_MASTER_URI=uri)
-    with open(tmp_path / "core.log", "wb") as log:
-        core = subprocess.Popen(
-            [sys.executable, "-m", "workbench", "core"], env=env, stdout=log, stderr=log
-        )
-    try:
-        assert _wait_port(port), (tmp_path / "core.log").read_text()
+    with private_core(tmp_path) as uri:
         yield uri
-    finally:
-        core.send_signal(2)
-        try:
-            core.wait(5)
-        except subprocess.TimeoutExpired:
-            core.kill()
-            core.wait()
-
-
-@dataclass
-class TeleopProcess:
-    """A node in a pseudo-terminal (``child``, pexpect) and the Twists seen on /cmd_vel."""
-
-    child: Any
-    twists: list[Any] = field(default_factory=list)
-
-    def type(self, keys: str) -> None:
-        """Type ``keys`` once the node reads in raw mode (Ctrl-C is then a key, not SIGINT).
-
-        Between reads the node restores the terminal, as the originals do; a Ctrl-C typed
-        then is a signal (a clean stop too, but with exit status 130).
-        """
-        import termios
-
-        def raw() -> bool:
-            return not termios.tcgetattr(self.child.child_fd)[3] & (termios.ICANON | termios.ISIG)
-
-        assert wait_for(raw), "the node never read the keyboard in raw mode"
-        self.child.send(keys)
-
-    def pairs(self) -> list[tuple[float, float]]:
-        """(linear.x, angular.z) of every Twist so far."""
-        return [(t.linear.x, t.angular.z) for t in list(self.twists)]
-
-    def wait_twists(self, count: int) -> list[tuple[float, float]]:
-        assert wait_for(lambda: len(self.twists) >= count), self.pairs()
-        return self.pairs()
 
 
 @pytest.fixture

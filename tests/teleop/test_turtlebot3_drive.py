@@ -13,7 +13,7 @@ import threading
 
 import numpy as np
 import pytest
-from conftest import wait_for
+from process_helpers import wait_for
 
 from workbench.bus import Bus, Node
 from workbench.msgs.geometry_msgs import Twist

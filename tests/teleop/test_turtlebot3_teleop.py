@@ -14,7 +14,7 @@ import signal
 import sys
 
 import pytest
-from conftest import TeleopProcess
+from teleop_helpers import TeleopProcess
 
 from workbench.teleop.turtlebot3 import (
     TB3_BANNER,

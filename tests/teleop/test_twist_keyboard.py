@@ -19,7 +19,7 @@ import threading
 import time
 
 import pytest
-from conftest import wait_for
+from process_helpers import wait_for
 
 from workbench.bus import Bus, Node
 from workbench.msgs.geometry_msgs import Twist

@@ -28,8 +28,10 @@ from workbench.sim.building.plan import (
     Wall,
 )
 from workbench.sim.building.plan_file import load_plan, parse_colour, plan_from_dict
+from workbench.sim.building.raster import blocked_cells
 
 __all__ = [
+    "blocked_cells",
     "BuildingPlan",
     "Floor",
     "Item",
