@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import select
 import sys
+from collections.abc import Callable, Sequence
 from typing import Any, TextIO
 
 from workbench.errors import WorkbenchError
@@ -74,3 +75,20 @@ class RawTerminal:
         if not data:
             raise EOFError("the terminal was closed")
         return data.decode(errors="replace")
+
+
+def run_keyboard_node(
+    name: str, argv: Sequence[str] | None, loop: Callable[[Any, RawTerminal], int]
+) -> int:
+    """Run a keyboard node: the terminal first (no terminal: one clear error before joining
+    the bus), then ``loop(node, terminal)``; Ctrl-C is a normal end (exit 0)."""
+    from workbench.bus import Node
+
+    terminal = RawTerminal(raw=True)
+    node = Node(name, argv=list(argv or []))
+    try:
+        return loop(node, terminal)
+    except KeyboardInterrupt:
+        return 0
+    finally:
+        node.shutdown()

@@ -20,7 +20,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from workbench.teleop.keys import Velocity
-from workbench.teleop.terminal import RawTerminal
+from workbench.teleop.terminal import RawTerminal, run_keyboard_node
 
 #: The help text, printed as ``print(TB3_BANNER)`` (so with a blank line before and after).
 TB3_BANNER = """
@@ -164,13 +164,4 @@ def turtlebot3_teleop(node: Any, terminal: RawTerminal, topic: str = "cmd_vel") 
 
 def main(argv: Sequence[str] | None = None) -> int:
     """``turtlebot3_teleop/turtlebot3_teleop_key`` for ``workbench run`` and launch files."""
-    from workbench.bus import Node
-
-    terminal = RawTerminal(raw=True)  # no terminal: one clear error before joining the bus
-    node = Node("turtlebot3_teleop", argv=list(argv or []))
-    try:
-        return turtlebot3_teleop(node, terminal)
-    except KeyboardInterrupt:
-        return 0
-    finally:
-        node.shutdown()
+    return run_keyboard_node("turtlebot3_teleop", argv, turtlebot3_teleop)

@@ -27,7 +27,7 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 from workbench.teleop.keys import Velocity
-from workbench.teleop.terminal import RawTerminal
+from workbench.teleop.terminal import RawTerminal, run_keyboard_node
 
 #: The help text, printed as ``print(TWIST_BANNER)`` (so with a blank line before and after).
 TWIST_BANNER = """
@@ -246,13 +246,4 @@ def twist_teleop(node: Any, terminal: RawTerminal, topic: str = "cmd_vel") -> in
 
 def main(argv: Sequence[str] | None = None) -> int:
     """``teleop_twist_keyboard/teleop_twist_keyboard.py`` for ``workbench run`` and launch files."""
-    from workbench.bus import Node
-
-    terminal = RawTerminal(raw=True)  # no terminal: one clear error before joining the bus
-    node = Node("teleop_twist_keyboard", argv=list(argv or []))
-    try:
-        return twist_teleop(node, terminal)
-    except KeyboardInterrupt:
-        return 0
-    finally:
-        node.shutdown()
+    return run_keyboard_node("teleop_twist_keyboard", argv, twist_teleop)
