@@ -11,6 +11,8 @@ import numpy as np
 
 from workbench.bus import Bus, Node
 from workbench.mapping.geometry import between, compose
+from workbench.mapping.gmapping_node import SlamGMapping
+from workbench.mapping.gmapping_params import read_params
 from workbench.mapping.simulate import demo_world, raycast
 from workbench.msgs import Time
 from workbench.msgs.geometry_msgs import TransformStamped
@@ -101,3 +103,29 @@ def wait_until(predicate, timeout: float = 20.0) -> bool:
             return True
         time.sleep(0.005)
     return bool(predicate())
+
+
+PARAMS = {
+    "base_frame": "base_link",
+    "linearUpdate": 0.2,
+    "angularUpdate": 0.2,
+    "map_update_interval": 1.0,
+    "maxUrange": 3.0,
+    "xmin": -2.0,
+    "ymin": -2.0,
+    "xmax": 2.0,
+    "ymax": 2.0,
+}
+
+
+#: Mappers started by a test, closed after it.
+STARTED: list[SlamGMapping] = []
+
+
+def start(bus: Bus, params: dict, argv: tuple[str, ...] = ()) -> SlamGMapping:
+    for name, value in params.items():
+        bus.params.set(f"/slam_gmapping/{name}", value)
+    node = Node("slam_gmapping", bus=bus, argv=list(argv))
+    mapper = SlamGMapping(node, read_params(node))
+    STARTED.append(mapper)
+    return mapper

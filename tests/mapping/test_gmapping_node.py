@@ -6,52 +6,15 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from gmapping_feed import Feeder, drifting_odometry, wait_until
+from gmapping_feed import PARAMS, Feeder, drifting_odometry, start, wait_until
 
-from workbench.bus import Bus, Node
+from workbench.bus import Node
 from workbench.mapping.geometry import between, compose
-from workbench.mapping.gmapping_node import SKIPPED_AT_START, SlamGMapping
-from workbench.mapping.gmapping_params import read_params
+from workbench.mapping.gmapping_node import SKIPPED_AT_START
 from workbench.mapping.simulate import loop_trajectory
 from workbench.msgs.nav_msgs import GetMap, MapMetaData, OccupancyGrid
 from workbench.msgs.std_msgs import Float64
 from workbench.tf import Buffer, TransformListener
-
-PARAMS = {
-    "base_frame": "base_link",
-    "linearUpdate": 0.2,
-    "angularUpdate": 0.2,
-    "map_update_interval": 1.0,
-    "maxUrange": 3.0,
-    "xmin": -2.0,
-    "ymin": -2.0,
-    "xmax": 2.0,
-    "ymax": 2.0,
-}
-
-
-#: Mappers started by a test, closed after it.
-STARTED: list[SlamGMapping] = []
-
-
-@pytest.fixture
-def bus():
-    bus = Bus()
-    bus.params.set("/use_sim_time", True)
-    yield bus
-    bus.shutdown()
-    for mapper in STARTED:
-        mapper.close()
-    STARTED.clear()
-
-
-def start(bus: Bus, params: dict, argv: tuple[str, ...] = ()) -> SlamGMapping:
-    for name, value in params.items():
-        bus.params.set(f"/slam_gmapping/{name}", value)
-    node = Node("slam_gmapping", bus=bus, argv=list(argv))
-    mapper = SlamGMapping(node, read_params(node))
-    STARTED.append(mapper)
-    return mapper
 
 
 def pose_of(t) -> np.ndarray:

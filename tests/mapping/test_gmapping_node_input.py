@@ -9,24 +9,11 @@ import time
 
 import numpy as np
 import pytest
-from gmapping_feed import Feeder, wait_until
+from gmapping_feed import PARAMS, Feeder, start, wait_until
 from process_helpers import Processes, private_core
-from test_gmapping_node import PARAMS, STARTED, start
 
-from workbench.bus import Bus
 from workbench.mapping.gmapping_node import SKIPPED_AT_START
 from workbench.mapping.simulate import loop_trajectory
-
-
-@pytest.fixture
-def bus():
-    bus = Bus()
-    bus.params.set("/use_sim_time", True)
-    yield bus
-    bus.shutdown()
-    for mapper in STARTED:
-        mapper.close()
-    STARTED.clear()
 
 
 def _skip_start(feeder: Feeder, pose: np.ndarray) -> None:

@@ -1,0 +1,22 @@
+"""Fixtures of the mapping tests (a module's own fixture of the same name takes precedence)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import pytest
+from gmapping_feed import STARTED
+
+from workbench.bus import Bus
+
+
+@pytest.fixture
+def bus() -> Iterator[Bus]:
+    """An in-process bus on simulated time; the mappers started on it are closed after."""
+    bus = Bus()
+    bus.params.set("/use_sim_time", True)
+    yield bus
+    bus.shutdown()
+    for mapper in STARTED:
+        mapper.close()
+    STARTED.clear()
