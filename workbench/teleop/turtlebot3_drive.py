@@ -81,15 +81,6 @@ def sector_min(scan: Any, start: float, end: float) -> float | None:
     return float(np.where(np.isneginf(values), 0.0, values).min())
 
 
-def usable_range(value: float | None, scan: Any, previous: float) -> float:
-    """A reading the decisions can compare: inf -> range_max, -inf -> 0, NaN/None -> previous."""
-    if value is None or math.isnan(value):
-        return previous
-    if math.isinf(value):
-        return float(scan.range_max) if value > 0 else 0.0
-    return value
-
-
 def yaw_of(orientation: Any) -> float:
     """The heading (rad) of a quaternion with fields x, y, z, w."""
     x, y, z, w = orientation.x, orientation.y, orientation.z, orientation.w
@@ -120,9 +111,9 @@ class Turtlebot3Drive:
     def on_scan(self, scan: Any) -> None:
         """Take the three readings from a ``sensor_msgs/LaserScan``."""
         previous = self.readings or (float(scan.range_max),) * 3
+        readings = (sector_min(scan, start, end) for start, end in SECTORS)
         center, left, right = (
-            usable_range(sector_min(scan, start, end), scan, last)
-            for (start, end), last in zip(SECTORS, previous, strict=True)
+            last if value is None else value for value, last in zip(readings, previous, strict=True)
         )
         with self._lock:
             self.readings = (center, left, right)
