@@ -54,33 +54,24 @@ _LOG = logging.getLogger("workbench.sim.plugins")
 #: Gazebo's ROS plugins that workbench provides, by their library name: ``module:Class``.
 #: A ``<plugin filename="libgazebo_ros_diff_drive.so">`` in a model loads the class here.
 BUILTIN_PLUGINS: dict[str, str] = {
-    "libgazebo_ros_diff_drive.so": (
-        "workbench.sim.gazebo_ros_plugins.diff_drive:GazeboRosDiffDrive"
-    ),
+    # gazebo_ros drive and state plugins (workbench.sim.gazebo_ros_plugins)
+    "libgazebo_ros_diff_drive.so": "workbench.sim.gazebo_ros_plugins.diff_drive:GazeboRosDiffDrive",
     "libgazebo_ros_joint_state_publisher.so": (
         "workbench.sim.gazebo_ros_plugins.joint_state_publisher:GazeboRosJointStatePublisher"
     ),
     "libgazebo_ros_planar_move.so": (
         "workbench.sim.gazebo_ros_plugins.planar_move:GazeboRosPlanarMove"
     ),
+    # gazebo_ros sensor plugins (workbench.sim.sensors)
+    "libgazebo_ros_laser.so": "workbench.sim.sensors.laser_plugin:GazeboRosLaser",
+    "libgazebo_ros_gpu_laser.so": "workbench.sim.sensors.laser_plugin:GazeboRosLaser",
+    "libgazebo_ros_camera.so": "workbench.sim.sensors.camera_plugin:GazeboRosCamera",
+    "libgazebo_ros_openni_kinect.so": "workbench.sim.sensors.camera_plugin:GazeboRosOpenniKinect",
+    "libgazebo_ros_depth_camera.so": "workbench.sim.sensors.camera_plugin:GazeboRosDepthCamera",
+    "libgazebo_ros_imu_sensor.so": "workbench.sim.sensors.imu_plugin:GazeboRosImuSensor",
+    # Gazebo's own model plugins (workbench.sim.gazebo_plugins)
+    "libFollowerPlugin.so": "workbench.sim.gazebo_plugins.follower:FollowerPlugin",
 }
-
-#: The sensor plugins (workbench.sim.sensors).
-BUILTIN_PLUGINS.update(
-    {
-        "libgazebo_ros_laser.so": "workbench.sim.sensors.laser_plugin:GazeboRosLaser",
-        "libgazebo_ros_gpu_laser.so": "workbench.sim.sensors.laser_plugin:GazeboRosLaser",
-        "libgazebo_ros_camera.so": "workbench.sim.sensors.camera_plugin:GazeboRosCamera",
-        "libgazebo_ros_openni_kinect.so": "workbench.sim.sensors.camera_plugin:GazeboRosOpenniKinect",
-        "libgazebo_ros_depth_camera.so": "workbench.sim.sensors.camera_plugin:GazeboRosDepthCamera",
-        "libgazebo_ros_imu_sensor.so": "workbench.sim.sensors.imu_plugin:GazeboRosImuSensor",
-    }
-)
-
-#: Gazebo's own model plugins (workbench.sim.gazebo_plugins).
-BUILTIN_PLUGINS.update(
-    {"libFollowerPlugin.so": "workbench.sim.gazebo_plugins.follower:FollowerPlugin"}
-)
 
 
 class UnavailablePluginError(SimulationError):
