@@ -48,6 +48,7 @@ from typing import Any
 import numpy as np
 
 from workbench.mapping.gmapping_params import GmappingParams, read_params
+from workbench.mapping.grid_message import occupancy_grid_message
 from workbench.mapping.incremental import Slam
 from workbench.mapping.live_map import (
     gmapping_cells,
@@ -301,22 +302,15 @@ class SlamGMapping:
 
     def update_map(self) -> None:
         """Publish the current map, its metadata and the pose entropy (``updateMap``)."""
-        from workbench.msgs.nav_msgs import OccupancyGrid
         from workbench.msgs.std_msgs import Float64
 
         slam, p = self.slam, self.params
         if slam is None:
             return
         cells, origin = gmapping_cells(slam.map(), (p.xmin, p.ymin, p.xmax, p.ymax))
-        grid = OccupancyGrid()
-        grid.header.stamp = self.node.now()
-        grid.header.frame_id = p.map_frame
-        info = grid.info
-        info.resolution = float(np.float32(p.delta))
-        info.height, info.width = (int(n) for n in cells.shape)
-        info.origin.position.x, info.origin.position.y = origin
-        info.origin.orientation.w = 1.0
-        grid.data = cells.reshape(-1)
+        grid = occupancy_grid_message(
+            cells, p.delta, (origin[0], origin[1], 0.0), p.map_frame, self.node.now()
+        )
         nodes = len(slam.graph.nodes)
         if nodes > 1:
             entropy = pose_entropy(slam.graph.relative_covariance(0, nodes - 1))

@@ -24,7 +24,6 @@ own texts), and the node exits with status 1. The node is anonymous
 
 from __future__ import annotations
 
-import math
 import re
 import threading
 from collections.abc import Sequence
@@ -35,6 +34,7 @@ from typing import Any
 import numpy as np
 
 from workbench.mapping.errors import MapFileError, MappingError
+from workbench.mapping.grid_message import occupancy_grid_message
 from workbench.mapping.map_server_yaml import read_map_yaml
 from workbench.mapping.mapfile import MapMetadata, pixels_to_map
 from workbench.mapping.pgm import read_image
@@ -51,11 +51,6 @@ def c_atof(text: str) -> float:
     """C's ``atof``: the longest number at the start of ``text`` (after blanks), else 0."""
     match = re.match(r"\s*[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?", text)
     return float(match.group(0)) if match else 0.0
-
-
-def yaw_quaternion(yaw: float) -> tuple[float, float, float, float]:
-    """``(x, y, z, w)`` of a rotation by ``yaw`` about z (Bullet's ``setEulerZYX(yaw, 0, 0)``)."""
-    return 0.0, 0.0, math.sin(yaw / 2.0), math.cos(yaw / 2.0)
 
 
 @dataclass
@@ -148,24 +143,14 @@ class MapServer:
 
     def publish(self, loaded: LoadedMap) -> None:
         """Make ``loaded`` the map: publish it on ``map`` and ``map_metadata``, serve it."""
-        from workbench.msgs.nav_msgs import OccupancyGrid
-
         meta = loaded.meta
         self.log.info('Loading map from image "%s"', meta.image)
-        height, width = (int(n) for n in loaded.cells.shape)
-        grid = OccupancyGrid()
         now = self.node.now()
-        grid.header.frame_id = self.frame_id
-        grid.header.stamp = now
+        grid = occupancy_grid_message(
+            loaded.cells, meta.resolution, meta.origin, self.frame_id, now, load_time=now
+        )
         info = grid.info
-        info.map_load_time = now
-        info.resolution = float(np.float32(meta.resolution))  # a float32 field
-        info.width, info.height = width, height
-        info.origin.position.x, info.origin.position.y = meta.origin[0], meta.origin[1]
-        q = info.origin.orientation
-        q.x, q.y, q.z, q.w = yaw_quaternion(meta.origin[2])
-        grid.data = loaded.cells.reshape(-1)
-        self.log.info("Read a %d X %d map @ %.3f m/cell", width, height, info.resolution)
+        self.log.info("Read a %d X %d map @ %.3f m/cell", info.width, info.height, info.resolution)
         with self._lock:
             self.map = grid
         self.metadata_pub.publish(grid.info)
@@ -228,5 +213,4 @@ __all__ = [
     "load_map_yaml",
     "main",
     "parse_arguments",
-    "yaw_quaternion",
 ]
