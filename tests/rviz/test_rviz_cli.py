@@ -7,12 +7,11 @@ import os
 import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
+from process_helpers import private_core, wait_for
 
-from workbench.bus import CoreError
 from workbench.viz.snapshot import snapshot_paths
 
 CONFIG = """Panels: []
@@ -75,30 +74,20 @@ def _wait_for_publishers(uri: str, topics: set[str], timeout: float = 120.0) -> 
     """Until every topic has a publisher on the core (the programs are up), however busy."""
     from workbench.bus import Bus
 
-    deadline = time.monotonic() + timeout
-    while True:
-        try:
-            with Bus.connect(uri) as bus:
-                while time.monotonic() < deadline:
-                    graph = bus.graph()
-                    ready = {t for t in topics if t in graph.topics and graph.topics[t].publishers}
-                    if ready == topics:
-                        return
-                    time.sleep(0.2)
-                raise AssertionError(f"no publishers on {sorted(topics - ready)}")
-        except CoreError:
-            if time.monotonic() > deadline:
-                raise
-            time.sleep(0.2)
+    def ready() -> set[str]:
+        graph = bus.graph()
+        return {t for t in topics if t in graph.topics and graph.topics[t].publishers}
+
+    with Bus.connect(uri) as bus:
+        assert wait_for(lambda: ready() == topics, timeout), f"no publishers on {topics - ready()}"
 
 
 @pytest.mark.multiprocess
 @pytest.mark.slow
-def test_the_manual_programs_draw_in_workbench_rviz(tmp_path, free_uri):
-    uri = free_uri
+def test_the_manual_programs_draw_in_workbench_rviz(tmp_path):
     (tmp_path / "lab.rviz").write_text(CONFIG)
     with (
-        _started(["core"], uri, tmp_path, "core.log"),
+        private_core(tmp_path) as uri,  # up before the programs, or they run in-process
         _started(["run", "using_markers", "basic_shapes.py"], uri, tmp_path, "shapes.log"),
         _started(["run", "using_markers", "simple_marker.py"], uri, tmp_path, "simple.log"),
         _started(["run", "using_markers", "points_and_lines.py"], uri, tmp_path, "lines.log"),

@@ -9,21 +9,15 @@ from __future__ import annotations
 
 import os
 import signal
-import socket
 import subprocess
 import sys
 import time
 
 import pytest
 from PIL import Image
+from process_helpers import free_port, wait_port
 
 pytestmark = [pytest.mark.multiprocess, pytest.mark.slow]
-
-
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
 
 
 def _start(args, env, cwd):
@@ -51,12 +45,13 @@ def _stop(proc) -> str:
 @pytest.fixture(scope="module")
 def lab(tmp_path_factory):
     cwd = tmp_path_factory.mktemp("lab2")
-    env = dict(os.environ, WORKBENCH_MASTER_URI=f"tcp/127.0.0.1:{_free_port()}")
+    port = free_port()
+    env = dict(os.environ, WORKBENCH_MASTER_URI=f"tcp/127.0.0.1:{port}")
     env.pop("WORKBENCH_DEBUG", None)
     core = _start(["core"], env, cwd)
     procs = [core]
     try:
-        time.sleep(1.0)
+        assert wait_port(port), "the core did not come up"  # else turtlesim runs in-process
         sim = _start(["turtlesim", "--png", str(cwd / "canvas.png")], env, cwd)
         procs.append(sim)
 
