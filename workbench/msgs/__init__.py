@@ -204,10 +204,17 @@ def register_service(typename: str, text: str) -> type[ServiceType]:
     return store().register_service(typename, text)
 
 
+#: "Time"/"Duration" -> (the store they came from, the class): simulators stamp every message.
+_TIME_CLASSES: dict[str, tuple[Any, Any]] = {}
+
+
 def __getattr__(name: str) -> Any:
     # Time and Duration are classes of the lazily built store.
-    if name == "Time":
-        return store().message_class("builtin_interfaces/Time")
-    if name == "Duration":
-        return store().message_class("builtin_interfaces/Duration")
+    if name in ("Time", "Duration"):
+        types = store()
+        cached = _TIME_CLASSES.get(name)
+        if cached is None or cached[0] is not types:
+            cached = (types, types.message_class(f"builtin_interfaces/{name}"))
+            _TIME_CLASSES[name] = cached
+        return cached[1]
     raise AttributeError(f"module 'workbench.msgs' has no attribute '{name}'")

@@ -33,6 +33,7 @@ class ServerOptions:
     paused: bool = False
     real_time_factor: float | None = None
     fast: bool = False
+    max_step_size: float | None = None
     until: float | None = None
     html: str | None = None
     seed: int = 0
@@ -55,6 +56,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--real-time-factor", type=float, metavar="X", help="run X times real time (default 1)"
     )
     speed.add_argument("--fast", action="store_true", help="run as fast as possible")
+    parser.add_argument(
+        "--max-step-size",
+        type=float,
+        metavar="S",
+        help="physics step, s (default: the world's <max_step_size>, else 0.001)",
+    )
     parser.add_argument("--until", type=float, metavar="T", help="stop at simulated time T, s")
     parser.add_argument("--html", metavar="OUT", help="write an animated recording when it stops")
     parser.add_argument("--seed", type=int, default=0, help="seed for plugins' random numbers")
@@ -77,6 +84,7 @@ def options_from(args: argparse.Namespace) -> ServerOptions:
         paused=args.paused,
         real_time_factor=args.real_time_factor,
         fast=args.fast,
+        max_step_size=args.max_step_size,
         until=args.until,
         html=args.html,
         seed=args.seed,
@@ -102,12 +110,17 @@ def build_server(options: ServerOptions, bus: Any = None) -> tuple[Any, Any, Any
     rtf = options.real_time_factor
     if rtf is not None and not (rtf > 0):
         raise SimulationError(f"--real-time-factor must be positive, got {rtf}")
+    step = options.max_step_size
+    if step is not None and not (0 < step <= 0.1):
+        raise SimulationError(f"--max-step-size must be in (0, 0.1] s, got {step}")
     random.seed(options.seed)
     np.random.seed(options.seed)
     world_file = load_world(options.world)
     physics = world_file.physics
+    if step is None:
+        step = physics.time_step or SERVER_PHYSICS["time_step"]
     world = World(
-        time_step=physics.time_step or SERVER_PHYSICS["time_step"],
+        time_step=step,
         ground=world_file.ground_plane,
         gravity=physics.gravity if physics.gravity is not None else 9.81,
         physics=SERVER_PHYSICS["physics"],

@@ -23,7 +23,7 @@ name it: ``my_plugin.py:MyPlugin``.
 ``update`` runs before every physics step, or every ``1 / update_rate`` seconds
 of simulated time when the class (or the ``<update_rate>`` parameter) sets one.
 A plugin may also set ``self.update_rate`` in ``load`` (a sensor plugin takes its
-sensor's ``<update_rate>``). Joint efforts and link wrenches a plugin applies
+sensor's ``<update_rate>``); it is skipped while its ``active()`` says False. Joint efforts and link wrenches a plugin applies
 last until its next update.
 A plugin that raises is reported with its file and line and disabled; the
 simulation keeps running.
@@ -137,6 +137,12 @@ class Plugin:
 
     def update(self, info: UpdateInfo) -> None:
         """Called before physics steps (see the module docstring)."""
+
+    def active(self) -> bool:
+        """Whether :meth:`update` is wanted now. An idle plugin is skipped and does not cut
+        the physics into its update periods (a sensor plugin nobody listens to, as
+        gazebo_ros's plugins check ``getNumSubscribers()`` before they compute)."""
+        return True
 
     def reset(self) -> None:
         """Called when the world or simulation is reset."""

@@ -30,6 +30,8 @@ STAIRS_COLOUR: Colour = (0.55, 0.5, 0.45, 1.0)
 FURNITURE_COLOUR: Colour = (0.62, 0.44, 0.26, 1.0)
 DEFAULT_THICKNESS = 0.15
 DEFAULT_HEIGHT = 2.5
+#: The world's physics step, s: Gazebo's default.
+DEFAULT_STEP = 0.001
 DEFAULT_DOOR_HEIGHT = 2.0
 #: A door narrower than this is reported by :meth:`BuildingPlan.notes` (a robot may not fit).
 MIN_DOOR_WIDTH = 0.8
@@ -151,6 +153,7 @@ class BuildingPlan:
     """A building: levels, stairs between them and furniture; ``source`` names its file.
 
     ``description``: a line for the world file's comment (``workbench world list``).
+    ``max_step_size``: the world's physics step, s.
 
     ``traced``: the walls were traced from an image (disjoint rectangles, which
     cannot cross, so :meth:`validate` skips that check, quadratic in the walls).
@@ -163,6 +166,7 @@ class BuildingPlan:
     source: str | None = None
     traced: bool = False
     description: str = ""
+    max_step_size: float = DEFAULT_STEP
 
     @property
     def walls(self) -> list[Wall]:

@@ -4,6 +4,7 @@ The format (lengths in m, angles in degrees; every key but the walls' ends is op
 
     name: house                      # default: the file's name
     description: A house of five rooms.   # the world file's first comment line
+    max_step_size: 0.001             # the world's physics step, s (Gazebo's default 0.001)
     thickness: 0.15                  # defaults for every wall
     height: 2.5
     colour: [0.85, 0.85, 0.8]        # r g b [a] in 0..1, '#d9d9cc', or a Gazebo name (Wood, Gazebo/Grey)
@@ -46,6 +47,7 @@ from typing import Any
 from workbench.sim.building.plan import (
     DEFAULT_DOOR_HEIGHT,
     DEFAULT_HEIGHT,
+    DEFAULT_STEP,
     DEFAULT_THICKNESS,
     EPS,
     FLOOR_COLOUR,
@@ -67,6 +69,7 @@ from workbench.sim.building.plan import (
 _PLAN_KEYS = {
     "name",
     "description",
+    "max_step_size",
     "thickness",
     "height",
     "colour",
@@ -152,6 +155,11 @@ def plan_from_dict(doc: Any, *, source: str | None = None, name: str = "building
     if not isinstance(description, str):
         raise reader.error(f"the plan: 'description' must be text, got {description!r}")
     plan.description = " ".join(description.split())
+    plan.max_step_size = reader.number(plan_doc, "max_step_size", "the plan", DEFAULT_STEP)
+    if not 0 < plan.max_step_size <= 0.1:
+        raise reader.error(
+            f"the plan: 'max_step_size' must be in (0, 0.1] s, got {plan.max_step_size:g}"
+        )
     defaults = {
         "thickness": reader.number(plan_doc, "thickness", "the plan", DEFAULT_THICKNESS),
         "height": reader.number(plan_doc, "height", "the plan", DEFAULT_HEIGHT),

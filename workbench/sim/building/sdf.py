@@ -48,7 +48,7 @@ def plan_to_sdf(plan: BuildingPlan, kind: Literal["world", "model"] = "world") -
         lines += _model(group[0].group, group, indent=2)
     lines += [
         '    <physics type="ode">',
-        "      <max_step_size>0.001</max_step_size>",
+        f"      <max_step_size>{plan.max_step_size:g}</max_step_size>",
         "      <real_time_factor>1</real_time_factor>",
         "    </physics>",
         "  </world>",

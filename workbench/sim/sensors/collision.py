@@ -37,6 +37,7 @@ class CollisionScene:
         R_BG: (n, 3, 3) and p_BG (n, 3): each shape in its body.
         names: Each shape's geometry name, for messages.
         scene_graph: The SceneGraph this was read from.
+        moving: Rows of shapes on bodies not welded to the world (None: not yet sorted).
     """
 
     table: ShapeTable
@@ -45,24 +46,52 @@ class CollisionScene:
     p_BG: np.ndarray
     names: list[str]
     scene_graph: Any
+    moving: np.ndarray | None = None
 
     def update(self, world: Any) -> None:
-        """Pose every shape as the world is now."""
+        """Pose every shape as the world is now (only the shapes of moving bodies change)."""
+        if self.moving is None:
+            self._anchor_welded(world)
+        moving = self.moving
+        assert moving is not None
+        if moving.size == 0:
+            return
         plant = world.plant
         context = plant.GetMyContextFromRoot(world.context)
-        R_WB = np.repeat(np.eye(3)[None], len(self.bodies), axis=0)
-        p_WB = np.zeros((len(self.bodies), 3))
+        bodies = self.bodies[moving]
+        R_WB = np.empty((len(moving), 3, 3))
+        p_WB = np.empty((len(moving), 3))
         from pydrake.multibody.tree import BodyIndex
 
+        for body in np.unique(bodies):
+            X = plant.EvalBodyPoseInWorld(context, plant.get_body(BodyIndex(int(body))))
+            pick = bodies == body
+            R_WB[pick] = X.rotation().matrix()
+            p_WB[pick] = X.translation()
+        self.table.R_WG[moving] = R_WB @ self.R_BG[moving]
+        self.table.p_WG[moving] = np.einsum("nij,nj->ni", R_WB, self.p_BG[moving]) + p_WB
+
+    def _anchor_welded(self, world: Any) -> None:
+        """Fold bodies welded to the world into it: static models never move in a diagram
+        (moving one rebuilds it), so their shapes are posed once."""
+        plant = world.plant
+        context = plant.GetMyContextFromRoot(world.context)
+        welded = {int(body.index()) for body in plant.GetBodiesWeldedTo(plant.world_body())}
+        from pydrake.multibody.tree import BodyIndex
+
+        R_WG, p_WG = self.R_BG.copy(), self.p_BG.copy()
+        fixed = self.bodies == 0
         for body in np.unique(self.bodies):
-            if body == 0:
+            if body == 0 or int(body) not in welded:
                 continue
             X = plant.EvalBodyPoseInWorld(context, plant.get_body(BodyIndex(int(body))))
             pick = self.bodies == body
-            R_WB[pick] = X.rotation().matrix()
-            p_WB[pick] = X.translation()
-        self.table.R_WG = R_WB @ self.R_BG
-        self.table.p_WG = np.einsum("nij,nj->ni", R_WB, self.p_BG) + p_WB
+            R = X.rotation().matrix()
+            R_WG[pick] = R @ self.R_BG[pick]
+            p_WG[pick] = self.p_BG[pick] @ R.T + X.translation()
+            fixed |= pick
+        self.table.R_WG, self.table.p_WG = R_WG, p_WG
+        self.moving = np.flatnonzero(~fixed)
 
     def mask_without(self, body_index: int | None) -> np.ndarray | None:
         """Shapes not fixed to ``body_index`` (None: all)."""

@@ -97,6 +97,10 @@ class Imu:
             time=float(world.time),
         )
 
+    def forget(self) -> None:
+        """Drop the previous reading: the next one reports no acceleration (a restart)."""
+        self._last = None
+
     def _draw(self, noises: tuple[NoiseSpec | None, ...]) -> np.ndarray:
         values = np.zeros(3)
         for i, noise in enumerate(noises):

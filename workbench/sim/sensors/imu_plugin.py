@@ -16,7 +16,12 @@ Parameters, as gazebo_plugins' gazebo_ros_imu_sensor.cpp (noetic-devel) reads th
   simulated: the orientation is relative to the world.
 
 Values come from :class:`workbench.sim.sensors.Imu` (with the sensor's own
-``<imu>`` noise), stamped with simulated time.
+``<imu>`` noise), stamped with simulated time. As the original, it computes and
+publishes only while the topic has subscribers (``getNumSubscribers() > 0``); an
+idle IMU does not cut the physics into its 5 ms periods either, and its first
+reading after a subscriber arrives has no previous velocity to difference
+(acceleration 0, the specific force only gravity's reaction), as at start-up.
+Without a bus it always updates (``latest`` holds the reading).
 """
 
 from __future__ import annotations
@@ -66,15 +71,21 @@ class GazeboRosImuSensor(RosSensorPlugin):
         self.latest: ImuReading | None = None
         self.latest_message: Any = None
         self.publisher = None
+        self._X_BS = self.spec.pose()
         if self.node is not None:
             from workbench.msgs.sensor_msgs import Imu as ImuMessage
 
             self.publisher = self.node.create_publisher(self.topic, ImuMessage, queue_size=1)
 
+    def active(self) -> bool:
+        if self.publisher is None or self.listeners(self.publisher) > 0:
+            return True
+        self.imu.forget()
+        return False
+
     def update(self, info: UpdateInfo) -> None:
-        _, body = self.sensor_pose()
-        X_BS = self.spec.pose()
-        reading = self.imu.measure(self.world, body, X_BS)
+        body = self.world.body(f"{self.model.name}::{self.spec.link}")
+        reading = self.imu.measure(self.world, body, self._X_BS)
         self.latest = reading
         noise = self.gaussian_noise
         orientation = _multiply(self.offset, reading.orientation)
