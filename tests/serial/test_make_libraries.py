@@ -133,9 +133,8 @@ def roundtrip(ros_lib: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
     build = tmp_path_factory.mktemp("build")
     (build / "entries.inc").write_text(entries_source(ros_lib))
     program = build / "roundtrip"
-    command = [gxx, "-std=c++11", "-O0", "-Wall", "-Wextra", "-Werror"]
-    # rosserial's arrays copy elements with memcpy/realloc, which g++ flags for classes.
-    command += ["-Wno-class-memaccess", f"-I{build}", f"-I{STUB}", f"-I{ros_lib}"]
+    command = [gxx, "-std=c++11", "-O0", "-Wall", "-Wextra", "-Werror", "-pedantic"]
+    command += [f"-I{build}", f"-I{STUB}", f"-I{ros_lib}"]
     command += [str(DATA / "roundtrip.cpp"), "-o", str(program)]
     done = subprocess.run(command, capture_output=True, text=True)
     assert done.returncode == 0, done.stderr[-4000:]

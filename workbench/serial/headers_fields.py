@@ -24,7 +24,9 @@ One deviation makes variable arrays *of messages* correct: rosserial decodes eve
 element into ``st_NAME`` and copies it into place, so elements holding variable
 arrays of their own end up sharing (or pointing at freed) buffers. Here elements
 are decoded in place; new slots start as copies of the untouched ``st_NAME`` and
-``NAME_allocated`` counts the slots that own their buffers.
+``NAME_allocated`` counts the slots that own their buffers. (Their ``realloc`` and
+``memcpy`` cast the class pointer to ``void*``: the byte copy, virtual table pointer
+included, is meant, and g++'s ``-Wclass-memaccess`` is told so.)
 """
 
 from __future__ import annotations
@@ -280,9 +282,9 @@ class Field:
         if self.element.kind == "message":
             lines += [
                 f"if({name}_lengthT > {name}_allocated){{",
-                f"  {member} = ({cpp}*)realloc({member}, {name}_lengthT * sizeof({cpp}));",
+                f"  {member} = ({cpp}*)realloc((void*){member}, {name}_lengthT * sizeof({cpp}));",
                 f"  for( uint32_t i = {name}_allocated; i < {name}_lengthT; i++)",
-                f"    memcpy( &({member}[i]), &(this->st_{name}), sizeof({cpp}));",
+                f"    memcpy( (void*)&({member}[i]), &(this->st_{name}), sizeof({cpp}));",
                 f"  {name}_allocated = {name}_lengthT;",
                 "}",
                 f"{name}_length = {name}_lengthT;",
