@@ -1,0 +1,1 @@
+"""rosserial: an Arduino on the bus over a serial port."""
