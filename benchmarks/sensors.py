@@ -561,7 +561,8 @@ def sensor_speed(repeats: int) -> dict[str, Any]:
 
 
 class Wanderer:
-    """turtlebot3_drive's decisions at 125 Hz of simulated time, fed by the laser plugin."""
+    """turtlebot3_drive's decisions at 125 Hz of simulated time, fed by the laser plugin's
+    scans and, at the diff drive's rate (its /odom), the robot's heading."""
 
     def __init__(self, session: Session) -> None:
         from workbench.teleop.turtlebot3_drive import LOOP_HZ, Turtlebot3Drive
@@ -571,6 +572,7 @@ class Wanderer:
         self.period = 1.0 / LOOP_HZ
         self.next_tick = 0.0
         self.seen: Any = None
+        self.odom_stamp: Any = None
 
     def __call__(self, server: Any) -> None:
         t = server.world.time
@@ -581,8 +583,11 @@ class Wanderer:
         if laser is not None and laser.latest_message is not self.seen:
             self.seen = laser.latest_message
             self.logic.on_scan(self.seen)
-        yaw = self.session.pose2d()[2]
-        self.logic.on_odom(orientation_message(yaw))
+        drive = self.session.drive
+        stamp = drive.last[0] if drive.last is not None else None
+        if stamp != self.odom_stamp:  # the drive published /odom since
+            self.odom_stamp = stamp
+            self.logic.on_odom(orientation_message(self.session.pose2d()[2]))
         command = self.logic.step()
         if command is not None:
             self.session.drive.on_command(twist(command.x, command.yaw))

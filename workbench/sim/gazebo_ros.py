@@ -53,6 +53,7 @@ class GazeboRosApi:
         self._next_clock = 0.0
         self._next_states = 0.0
         self._last_time = -1.0
+        self._clock_message = Clock
         self.clock = node.create_publisher("/clock", Clock, queue_size=10)
         self.model_states = node.create_publisher("/gazebo/model_states", gm.ModelStates, 1)
         self.link_states = node.create_publisher("/gazebo/link_states", gm.LinkStates, 1)
@@ -95,9 +96,7 @@ class GazeboRosApi:
             self._next_clock = self._next_states = t
         self._last_time = t
         if t + 1e-12 >= self._next_clock:
-            from workbench.msgs.rosgraph_msgs import Clock
-
-            self.clock.publish(Clock(clock=_stamp(t)))
+            self.clock.publish(self._clock_message(clock=_stamp(t)))
             self._next_clock = t + self.clock_period
         if t + 1e-12 < self._next_states:
             return
