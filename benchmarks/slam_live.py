@@ -251,6 +251,8 @@ def main(argv: list[str] | None = None) -> int:
     result = {
         "machine": describe(("drake", "numpy")),
         "seed": args.seed,
+        "odometry": args.odometry,
+        "step_s": args.max_step_size,
         "simulated_s": live["simulated_s"],
         "rtf_slam_and_sim": live["simulated_s"] / live["wall_s"],
         "rtf_sim_alone": alone["simulated_s"] / alone["wall_s"],
@@ -269,7 +271,8 @@ def report(result: dict[str, Any]) -> None:
     m = result["machine"]
     print(f"machine: {m['cpu']}, {m['usable_cores']} cores, load {m['load_average']}")
     print(f"live SLAM in the house: {result['simulated_s']:.0f} simulated s, seed {result['seed']}")
-    print("| measure | slam_gmapping | dead reckoning (encoders) | target |\n|---|---|---|---|")
+    source = "encoders" if result["odometry"] == "encoder" else "Gazebo's true pose, as shipped"
+    print(f"| measure | slam_gmapping | dead reckoning ({source}) | target |\n|---|---|---|---|")
     slam, odom, quality = result["slam"], result["dead_reckoning"], result["map"]
     print(
         f"| position error RMS (max) | {slam['rms_m']:.3f} m ({slam['max_m']:.3f}) | "

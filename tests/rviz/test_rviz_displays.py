@@ -260,3 +260,51 @@ def test_an_rviz_config_gives_its_displays_and_the_robot_is_drawn_where_tf_says(
     np.testing.assert_allclose(drawn_at[-1], expected, atol=1e-6)
     del publisher
     rviz.close()
+
+
+def test_scans_newer_than_tf_wait_silently_and_are_drawn_in_order_once_tf_catches_up(scene):
+    """tf2's MessageFilter (RViz's LaserScan display) holds a message whose stamp tf has not
+    reached yet, without an error status, and draws it when tf gets there."""
+    from workbench.msgs import Time
+    from workbench.msgs.sensor_msgs import LaserScan
+    from workbench.tf import TransformBroadcaster
+
+    bus, node, meshcat = scene
+    rviz = RViz(bus, fixed_frame="map", displays=["LaserScan"], meshcat=meshcat)
+    (display,) = rviz.displays
+    display.draw_every = True
+    moving = TransformBroadcaster(node)
+
+    def odom(seconds: float, x: float) -> None:
+        t = TransformStamped()
+        t.header.stamp = Time(int(seconds), int(round(seconds % 1 * 1e9)))
+        t.header.frame_id, t.child_frame_id = "map", "laser"
+        t.transform.translation.x = x
+        t.transform.rotation.w = 1.0
+        moving.sendTransform(t)
+
+    publisher = node.create_publisher("scan", LaserScan)
+
+    def scan(seconds: float) -> None:
+        message = LaserScan(angle_min=0.0, angle_max=0.0, angle_increment=0.1, range_max=5.0)
+        message.header.frame_id = "laser"
+        message.header.stamp = Time(int(seconds), int(round(seconds % 1 * 1e9)))
+        message.ranges = [1.0]
+        publisher.publish(message)
+
+    odom(1.0, 0.0)
+    odom(2.0, 1.0)
+    scan(1.5)
+    scan(2.5)  # newer than tf
+    scan(2.7)
+    _settle(rviz, display, count=3)
+    assert display.drawn == 1 and display.status == {"Topic": "OK"}
+    odom(3.0, 2.0)
+    deadline = time.monotonic() + 10
+    while display.drawn < 3 and time.monotonic() < deadline:
+        time.sleep(0.01)
+        rviz.update()
+    assert display.drawn == 3 and display.status == {"Topic": "OK"}
+    # the last one drawn is the newest: x = 1.7 m at 2.7 s
+    np.testing.assert_allclose(meshcat.transforms["/rviz/LaserScan"][0, 3], 1.7, atol=1e-6)
+    rviz.close()

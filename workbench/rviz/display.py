@@ -102,41 +102,51 @@ class Display:
             self._queue.clear()
         return items
 
-    def requeue(self, items: list[tuple[float, Any]]) -> None:
-        """Put back messages whose frame tf cannot place yet (for up to ``TF_WAIT`` s)."""
+    def requeue(self, items: list[tuple[float, Any]], *, expire: bool = True) -> None:
+        """Put messages tf cannot place yet back in front of the queue, oldest first (for up
+        to ``TF_WAIT`` s, or with ``expire`` False until newer ones push them out)."""
         now = time.monotonic()
+        kept = [item for item in items if not expire or now - item[0] < TF_WAIT]
         with self._lock:
-            for item in reversed(items):
-                if now - item[0] < TF_WAIT:
-                    self._queue.appendleft(item)
+            waiting = kept + list(self._queue)
+            self._queue.clear()
+            self._queue.extend(waiting)  # a full queue drops the oldest, as a subscriber's
 
     def update(self, context: Context) -> None:
         """Draw what arrived (the default: the newest message only)."""
         items = self.take()
         if not items:
             return
-        if self.draw_every:
-            for item in items:
-                self.draw_latest(context, [item])
-        else:
-            self.draw_latest(context, items)
+        if not self.draw_every:
+            items = items[-1:]
+        for k, (arrived, message) in enumerate(items):
+            outcome = self._draw_one(context, message)
+            if outcome == "held":  # newer than tf: held with everything after it, silently
+                self.requeue(items[k:], expire=False)
+                return
+            if outcome == "failed" and time.monotonic() - arrived < TF_WAIT:
+                self.requeue(items[k:])
+                return
 
-    def draw_latest(self, context: Context, items: list[tuple[float, Any]]) -> None:
+    def _draw_one(self, context: Context, message: Any) -> str:
+        """``"drawn"``, ``"held"`` (tf has not reached its stamp: tf2's MessageFilter holds
+        such a message without a status, as a paused simulation's last scan in RViz) or
+        ``"failed"`` (the Transform status says why)."""
         from workbench.tf.exceptions import TransformException
 
-        arrived, message = items[-1]
         try:
             self.draw(context, message)
         except TransformException as error:
+            if "into the future" in str(error):
+                return "held"
             frame = getattr(getattr(message, "header", None), "frame_id", "?")
             self.status["Transform"] = (
                 f"No transform from [{frame}] to fixed frame [{context.fixed_frame}]: {error}"
             )
-            if time.monotonic() - arrived < TF_WAIT:
-                self.requeue([items[-1]])
-            return
+            return "failed"
         self.status.pop("Transform", None)
         self.drawn += 1
+        return "drawn"
 
     def draw(self, context: Context, message: Any) -> None:
         """Draw one message (subclasses)."""
