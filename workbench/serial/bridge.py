@@ -74,7 +74,7 @@ UNABLE_TO_SYNC = (
 LOST_SYNC = "Lost sync with device, restarting..."
 
 #: Seconds without new bytes after which a frame still incomplete is given up.
-IDLE_FLUSH = 0.1
+IDLE_FLUSH = 0.05
 #: At most one topic request per this many seconds for frames on unknown ids.
 REQUEST_INTERVAL = 0.5
 
@@ -87,10 +87,16 @@ class Bridge:
         timeout: rosserial_python's timeout in seconds: no time request for three of
             them means the sync is lost; also how long a service call waits for the device.
         clock: Monotonic seconds (tests pass their own).
+        write_thread: Write frames from a thread of the bridge's own (so a bus callback
+            never waits for the port); False writes them in the caller's thread.
     """
 
     def __init__(
-        self, node: Any, timeout: float = 5.0, clock: Callable[[], float] = time.monotonic
+        self,
+        node: Any,
+        timeout: float = 5.0,
+        clock: Callable[[], float] = time.monotonic,
+        write_thread: bool = True,
     ) -> None:
         self.node = node
         self.log = node.get_logger()
@@ -117,6 +123,7 @@ class Bridge:
             queue.SimpleQueue()
         )
         self._writer: threading.Thread | None = None
+        self._threaded = write_thread
         self._write_lock = threading.Lock()
         self._diagnostics = node.create_publisher(
             "/diagnostics", "diagnostic_msgs/DiagnosticArray", queue_size=10
@@ -143,7 +150,7 @@ class Bridge:
         self.buffer_out = self.buffer_in = -1
         self.synced = False
         self.lastsync = self._last_bytes = self.clock()
-        if self._writer is None:
+        if self._threaded and self._writer is None:
             self._writer = threading.Thread(
                 target=self._write_loop, name="rosserial-tx", daemon=True
             )
@@ -158,18 +165,22 @@ class Bridge:
         link = self.link
         while not stop.is_set():
             data = link.read_some()
-            now = self.clock()
             if data:
-                self._last_bytes = now
                 self.receive(data)
-            elif self.decoder.pending and now - self._last_bytes > IDLE_FLUSH:
-                self._handle(self.decoder.flush())
-            if now - self.lastsync > self.timeout * 3:
-                self._sync_lost(now)
+            self.tick()
 
     def receive(self, data: bytes) -> None:
         """Handle bytes that came from the device."""
+        self._last_bytes = self.clock()
         self._handle(self.decoder.feed(data))
+
+    def tick(self) -> None:
+        """Give up a frame the line went quiet in; say when the sync is lost and ask again."""
+        now = self.clock()
+        if self.decoder.pending and now - self._last_bytes > IDLE_FLUSH:
+            self._handle(self.decoder.flush())
+        if now - self.lastsync > self.timeout * 3:
+            self._sync_lost(now)
 
     def _handle(self, events: list[Frame | FrameProblem]) -> None:
         for event in events:
@@ -242,14 +253,22 @@ class Bridge:
 
     def send(self, topic_id: int, payload: bytes) -> None:
         """Queue a frame for the device (dropped while no link is attached)."""
-        self._writes.put((encode_frame(topic_id, payload), None))
+        self._put(encode_frame(topic_id, payload))
+
+    def _put(self, frame: bytes, done: threading.Event | None = None) -> None:
+        if self._threaded:
+            self._writes.put((frame, done))
+            return
+        self._write([frame])
+        if done is not None:
+            done.set()
 
     def request_topics(self) -> None:
         """Ask the device to announce its topics (``Requesting topics...``)."""
         self.log.info("Requesting topics...")
         self._last_request = self.clock()
         self._discard_input()
-        self._writes.put((REQUEST_TOPICS, None))
+        self._put(REQUEST_TOPICS)
 
     def stop_device(self, timeout: float = 1.0) -> None:
         """Send TX_STOP and wait (up to ``timeout`` s) until it is written."""
@@ -257,7 +276,7 @@ class Bridge:
             return
         self._discard_input()
         done = threading.Event()
-        self._writes.put((TX_STOP, done))
+        self._put(TX_STOP, done)
         self.log.info("Sending tx stop request")
         done.wait(timeout)
 
@@ -291,16 +310,19 @@ class Bridge:
                     break
                 chunks.append(more[0])
                 events.append(more[1])
-            link = self.link
-            if link is not None:
-                try:
-                    with self._write_lock:
-                        link.write(b"".join(chunks))
-                except LinkLost:
-                    pass  # the reader sees the same loss and reconnects
+            self._write(chunks)
             for event in events:
                 if event is not None:
                     event.set()
+
+    def _write(self, chunks: list[bytes]) -> None:
+        link = self.link
+        if link is not None:
+            try:
+                with self._write_lock:
+                    link.write(b"".join(chunks))
+            except LinkLost:
+                pass  # the reader sees the same loss and reconnects
 
     def fits(self, size: int, topic: str) -> bool:
         """Whether a ``size``-byte message for ``topic`` fits the device's input buffer."""

@@ -227,7 +227,7 @@ class NodeHandle:
         self.publishers: list[Publisher | None] = []
         self.subscribers: list[Subscriber | None] = []
         self.configured_ = False
-        self.decoder = FrameDecoder()
+        self.decoder = FrameDecoder(patient=False)
         self._events: deque[Frame | FrameProblem] = deque()
         self._pending_since: int | None = None
         self.rt_time = 0
@@ -255,7 +255,7 @@ class NodeHandle:
         self.max_subscribers, self.max_publishers, self.input_size, self.output_size = chosen
         self.publishers = [None] * self.max_publishers
         self.subscribers = [None] * self.max_subscribers
-        self.decoder = FrameDecoder(max_length=max(self.input_size - FRAME_OVERHEAD, 0))
+        self.decoder = FrameDecoder(max(self.input_size - FRAME_OVERHEAD, 0), patient=False)
         self._events.clear()
         self.last_sync_receive_time = self.hardware.time()
 

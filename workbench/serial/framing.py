@@ -9,7 +9,8 @@ It never raises on input and never loses a frame to a neighbour's damage:
 * a wrong version byte, a wrong length checksum, a length above ``max_length`` or a
   wrong message checksum drops that candidate only: scanning resumes at the byte after
   its sync byte, so a frame that starts inside a damaged one (a device that reset
-  mid-frame, a truncated frame followed by the next) is still found;
+  mid-frame, a truncated frame followed by the next) is still found; what that second
+  look finds wrong inside bytes already reported is not reported again;
 * a candidate whose checksum passes by chance (one in 256 for random bytes) but which
   contains the start of another complete, valid frame is not a frame: real frames
   never overlap, so the inner one wins;
@@ -93,10 +94,17 @@ class FrameDecoder:
         max_length: Longest payload accepted, in bytes (a device cannot send more than
             its buffer holds); longer claims are dropped as ``too_long`` at once
             instead of waiting for that many bytes.
+        patient: A frame whose checksum byte is 0xff and ends what has arrived waits
+            for the next byte (or :meth:`flush`), since that 0xff may start a frame the
+            candidate overlaps. The host is patient (its input can be damaged; about one
+            frame in 256 waits, until the next byte or the line goes quiet); a device
+            reading only the host's well-formed frames need not be, and is not kept
+            waiting by the topic request (``ff fe 00 00 ff 00 00 ff``).
     """
 
-    def __init__(self, max_length: int = MAX_PAYLOAD) -> None:
+    def __init__(self, max_length: int = MAX_PAYLOAD, patient: bool = True) -> None:
         self.max_length = max_length
+        self.patient = patient
         self._buf = bytearray()
         self._pos = 0  # where scanning resumes, in _buf
         self._base = 0  # stream offset of _buf[0]
@@ -104,6 +112,8 @@ class FrameDecoder:
         self._quiet_version_at = -1  # stream offset whose version problem is not repeated
         self._noise_start = -1  # stream offset of the current run of noise, or -1
         self._noise_count = 0
+        #: Candidates dropped inside bytes already reported, so not reported again.
+        self.quiet_problems = 0
 
     @property
     def pending(self) -> int:
@@ -208,7 +218,7 @@ class FrameDecoder:
         """Whether a complete valid frame starts inside ``buf[start:end]`` (None: not known yet)."""
         buf = self._buf
         n = len(buf)
-        if n == end and buf[end - 1] == SYNC and not final:
+        if self.patient and n == end and buf[end - 1] == SYNC and not final:
             return None  # the checksum byte may be the sync byte of an overlapping frame
         j = buf.find(_START, start + 1, end + 1)
         while j >= 0:
@@ -236,11 +246,18 @@ class FrameDecoder:
         length: int = 0,
         detail: int = 0,
     ) -> None:
-        """Report the candidate at ``i`` (covering ``buf[i:span_end]``); resume after its sync."""
+        """Report the candidate at ``i`` (covering ``buf[i:span_end]``); resume after its sync.
+
+        A candidate that starts inside bytes already reported (a sync byte in the payload
+        of a damaged frame, scanned again) is the same damage: it is counted, not reported.
+        """
+        self._pos = i + 1
+        if self._base + i < self._covered:
+            self.quiet_problems += 1
+            return
         self._end_noise(events)
         events.append(FrameProblem(kind, self._base + i, length, detail))
-        self._covered = max(self._covered, self._base + span_end)
-        self._pos = i + 1
+        self._covered = self._base + span_end
 
     def _skip(self, start: int, stop: int) -> None:
         """Bytes ``buf[start:stop]`` hold no sync byte: count those no problem covered as noise."""
