@@ -469,13 +469,13 @@ class Bridge:
     def _parameter_request(self, payload: bytes) -> None:
         from workbench.serial.parameters import parameter_response
 
-        request = deserialize(payload, "rosserial_msgs/RequestParamRequest")
+        request: Any = deserialize(payload, "rosserial_msgs/RequestParamRequest")
         response = parameter_response(self.node, request.name, self.log)
         if response is not None:
             self.send(ID_PARAMETER_REQUEST, serialize(response))
 
     def _device_log(self, payload: bytes) -> None:
-        message = deserialize(payload, "rosserial_msgs/Log")
+        message: Any = deserialize(payload, "rosserial_msgs/Log")
         write = {
             0: self.log.debug,
             1: self.log.info,

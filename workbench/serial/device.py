@@ -373,12 +373,12 @@ class NodeHandle:
 
     def syncTime(self, data: bytes) -> None:  # noqa: N802
         try:
-            t = deserialize(data, "std_msgs/Time").data
+            stamp: Any = deserialize(data, "std_msgs/Time")
         except MessageError:
             return
         offset = self.hardware.time() - self.rt_time
-        sec = t.sec + offset // 1000
-        nsec = t.nanosec + (offset % 1000) * 1_000_000
+        sec = stamp.data.sec + offset // 1000
+        nsec = stamp.data.nanosec + (offset % 1000) * 1_000_000
         self.setNow(sec, nsec)
         self.last_sync_receive_time = self.hardware.time()
 

@@ -217,7 +217,7 @@ class VirtualBoard:
         if button is None and buttons:
             return buttons[0]
         if button in buttons:
-            return button  # type: ignore[return-value]
+            return button
         raise SerialError(
             f"the sketch {self.sketch_name} wires no button '{button}'",
             hint=f"its buttons: {', '.join(buttons) or 'none'}",
