@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import threading
-
 import pytest
 from process_helpers import wait_for
 
@@ -12,7 +10,7 @@ from workbench.errors import SerialError
 from workbench.msgs.std_msgs import Bool, Empty, String
 from workbench.msgs.std_srvs import SetBool
 from workbench.serial.board import SketchError
-from workbench.serial.serial_node import serve_serial
+from workbench.serial.serial_node import BackgroundHost
 from workbench.serial.virtual import VirtualBoard
 
 WAIT = 20.0
@@ -25,42 +23,19 @@ def bus():
     bus.shutdown()
 
 
-class Host:
-    """serve_serial in a thread on ``port`` (stopped at the end of the test)."""
-
-    def __init__(self, bus, port: str) -> None:
-        self.node = Node("serial_node", bus=bus)
-        self.stop = threading.Event()
-        self.errors: list[BaseException] = []
-        self.thread = threading.Thread(target=self._run, args=(port,), daemon=True)
-        self.thread.start()
-
-    def _run(self, port: str) -> None:
-        try:
-            serve_serial(self.node, port, 57600, self.stop)
-        except BaseException as error:  # reported by close()
-            self.errors.append(error)
-
-    def close(self) -> None:
-        self.stop.set()
-        self.thread.join(10)
-        self.node.shutdown()
-        assert not self.errors, self.errors
-
-
 @pytest.fixture
 def start(bus):
     started: list = []
 
     def _start(sketch: str, **options):
         board = VirtualBoard(sketch, bus=bus, **options).start()
-        host = Host(bus, board.path)
+        host = BackgroundHost(board.path, bus=bus)
         started.append((host, board))
         return board, host
 
     yield _start
     for host, board in reversed(started):
-        host.close()
+        host.stop()
         board.stop()
 
 
@@ -148,7 +123,7 @@ def test_the_host_reconnects_when_the_board_comes_back(bus, tmp_path, capsys):
     link = tmp_path / "ttyACM0"
     chatter = collect(bus, "chatter", String)
     first = VirtualBoard("hello_world", link=link).start()
-    host = Host(bus, str(link))
+    host = BackgroundHost(str(link), bus=bus)
     try:
         assert wait_for(lambda: chatter, WAIT)
         first.stop()  # the USB cable is pulled
@@ -158,7 +133,7 @@ def test_the_host_reconnects_when_the_board_comes_back(bus, tmp_path, capsys):
         try:
             assert wait_for(lambda: len(chatter) > count, WAIT)
         finally:
-            host.close()
+            host.stop()
             second.stop()
     finally:
         first.stop()

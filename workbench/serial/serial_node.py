@@ -155,6 +155,54 @@ def serve_tcp(node: Any, tcp_port: int, stop: threading.Event) -> None:
         log.info("All done")
 
 
+class BackgroundHost:
+    """The host node on a port, in a background thread (for notebooks and scripts).
+
+    ``host = BackgroundHost("/dev/ttyACM0", bus=bus)`` bridges the board until
+    ``host.stop()`` (which sends TX_STOP). Its lines are printed as the node's.
+
+    Args:
+        port: The board's port.
+        baud: Bits per second.
+        bus: The bus of its node (None: the process's default bus).
+        name: The node's name.
+    """
+
+    def __init__(self, port: str, baud: int = 57600, bus: Any = None, name: str = "serial_node"):
+        from workbench.bus import Node
+
+        self.node = Node(name, bus=bus)
+        self.bridge = Bridge(self.node)
+        self.error: BaseException | None = None
+        self._stop = threading.Event()
+        self._thread = threading.Thread(
+            target=self._run, args=(port, baud), name="serial-host", daemon=True
+        )
+        self._thread.start()
+
+    def _run(self, port: str, baud: int) -> None:
+        try:
+            serve_serial(self.node, port, baud, self._stop, self.bridge)
+        except BaseException as error:  # handed to the caller by stop()
+            self.error = error
+
+    def is_running(self) -> bool:
+        return self._thread.is_alive()
+
+    def stop(self, timeout: float = 10.0) -> None:
+        """Stop bridging (TX_STOP to the board) and leave the bus.
+
+        Raises:
+            SerialPortError: The port could not be opened (or what else stopped the host).
+        """
+        self._stop.set()
+        self._thread.join(timeout)
+        self.node.shutdown()
+        if self.error is not None:
+            error, self.error = self.error, None
+            raise error
+
+
 def parse_target(node: Any, args: Sequence[str]) -> tuple[str, int, int]:
     """``(port, baud, tcp_port)`` from the arguments and private parameters, as the original.
 
