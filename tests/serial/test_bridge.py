@@ -298,3 +298,26 @@ def test_tx_stop_and_a_lost_link(host):
     link.lost = True
     with pytest.raises(LinkLost):
         bridge.serve(threading.Event())
+
+
+def test_a_quiet_line_settles_held_frames_and_gives_up_cut_ones(capsys, host, bus):
+    bridge, link, clock = host
+    bridge.receive(frame(0, topic_info(125, "chatter", "std_msgs/String")))
+    chatter = received(bus, "chatter", "std_msgs/String")
+    text_ff = next("x" * k for k in range(256) if frame(125, string("x" * k))[-1] == 0xFF)
+    bridge.receive(frame(125, string(text_ff)))
+    assert chatter == []  # its last byte is 0xff: held until the byte after it, or quiet
+    clock.t += 0.03
+    bridge.tick()
+    assert [m.data for m in chatter] == [text_ff]
+    bridge.receive(frame(125, string("cut short"))[:-3])
+    clock.t += 0.3
+    bridge.tick()
+    assert "Packet Failed" not in text(capsys)  # still waiting for the rest
+    clock.t += 0.3
+    link.written.clear()
+    bridge.tick()
+    out = text(capsys)
+    assert "Packet Failed :  Failed to read msg data" in out
+    assert "expected msg length is 13" in out
+    assert bytes(link.written) == REQUEST_TOPICS  # a cut frame: maybe a reset board

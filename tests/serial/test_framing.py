@@ -180,3 +180,26 @@ def test_the_fuzz_check_catches_a_decoder_that_drops_frames(fuzz, monkeypatch):
     monkeypatch.setattr(FrameDecoder, "feed", lossy)
     result = fuzz.fuzz(20, seed=1000)
     assert result.wrong_streams
+
+
+def test_a_frame_ending_in_0xff_waits_for_the_next_byte_or_settle():
+    text = next("x" * k for k in range(256) if _frame(125, _string("x" * k))[-1] == 0xFF)
+    ending_in_ff = _frame(125, _string(text))
+    decoder = FrameDecoder()
+    assert decoder.feed(ending_in_ff) == []  # held: its 0xff might start another frame
+    assert decoder.pending == len(ending_in_ff)
+    [held] = decoder.settle()  # the line went quiet: it was a frame
+    assert (held.topic_id, held.payload) == (125, _string(text))
+    assert decoder.feed(HELLO[:5]) == [] and decoder.settle() == []
+    assert decoder.pending == 5  # a frame still arriving is kept, not given up
+    assert _frames(decoder.feed(HELLO[5:])) == [(125, HELLO[7:-1])]
+    # the byte after it, when already there, decides at once
+    assert _frames(FrameDecoder().feed(ending_in_ff + HELLO[:1])) == [(125, _string(text))]
+    # a device reads the host's frames without waiting
+    assert _frames(FrameDecoder(patient=False).feed(bytes.fromhex("ff fe 00 00 ff 00 00 ff"))) == [
+        (0, b"")
+    ]
+
+
+def _string(text: str) -> bytes:
+    return len(text).to_bytes(4, "little") + text.encode()

@@ -73,8 +73,11 @@ UNABLE_TO_SYNC = (
 )
 LOST_SYNC = "Lost sync with device, restarting..."
 
+#: Seconds without new bytes after which a complete frame held back to see the byte after
+#: it is delivered (one frame in 256 ends in 0xff and may be held).
+SETTLE_WAIT = 0.02
 #: Seconds without new bytes after which a frame still incomplete is given up.
-IDLE_FLUSH = 0.05
+IDLE_FLUSH = 0.5
 #: At most one topic request per this many seconds for frames on unknown ids.
 REQUEST_INTERVAL = 0.5
 
@@ -177,8 +180,12 @@ class Bridge:
     def tick(self) -> None:
         """Give up a frame the line went quiet in; say when the sync is lost and ask again."""
         now = self.clock()
-        if self.decoder.pending and now - self._last_bytes > IDLE_FLUSH:
-            self._handle(self.decoder.flush())
+        if self.decoder.pending:
+            quiet = now - self._last_bytes
+            if quiet > IDLE_FLUSH:
+                self._handle(self.decoder.flush())
+            elif quiet > SETTLE_WAIT:
+                self._handle(self.decoder.settle())
         if now - self.lastsync > self.timeout * 3:
             self._sync_lost(now)
 

@@ -16,7 +16,8 @@ It never raises on input and never loses a frame to a neighbour's damage:
   never overlap, so the inner one wins;
 * a candidate still waiting for bytes is held until they come or :meth:`flush` says
   no more will (end of stream, or the line went quiet); then it is reported as
-  truncated and scanning resumes inside it.
+  truncated and scanning resumes inside it; a complete frame held only to see the byte
+  after it is decided by :meth:`settle` as soon as the line is quiet.
 
 Problems carry the stream offset of their first byte, so a caller (or the fuzz in
 ``benchmarks/serial.py``) can tell which damaged frame each one stands for.
@@ -114,6 +115,7 @@ class FrameDecoder:
         self._noise_count = 0
         #: Candidates dropped inside bytes already reported, so not reported again.
         self.quiet_problems = 0
+        self._settling = False
 
     @property
     def pending(self) -> int:
@@ -137,6 +139,21 @@ class FrameDecoder:
         self._base += len(self._buf)
         self._buf.clear()
         self._pos = 0
+        return events
+
+    def settle(self) -> list[Event]:
+        """Decide a complete frame held back only for the bytes after it, as if none follow.
+
+        A frame still missing bytes of its own stays held (unlike :meth:`flush`). The host
+        calls this once the line has been quiet for a moment.
+        """
+        events: list[Event] = []
+        self._settling = True
+        try:
+            self._scan(events, final=False)
+        finally:
+            self._settling = False
+        self._compact()
         return events
 
     def reset(self) -> None:
@@ -218,6 +235,7 @@ class FrameDecoder:
         """Whether a complete valid frame starts inside ``buf[start:end]`` (None: not known yet)."""
         buf = self._buf
         n = len(buf)
+        final = final or self._settling
         if self.patient and n == end and buf[end - 1] == SYNC and not final:
             return None  # the checksum byte may be the sync byte of an overlapping frame
         j = buf.find(_START, start + 1, end + 1)
