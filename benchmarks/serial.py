@@ -374,7 +374,7 @@ def main() -> int:
     print(f"  frames out of nowhere                     {fuzzed.spurious_frames}\n")
 
     header = (
-        f"{'transport':<9}{'direction':<14}{'msg':>6}  {'unpaced msg/s':>14}{'raw':>10}{'ratio':>7}"
+        f"{'transport':<10}{'direction':<14}{'msg':>6}  {'unpaced msg/s':>14}{'raw':>10}{'ratio':>7}"
         f"  {'57600 baud msg/s':>17}{'raw':>8}{'ratio':>7}{'lost':>6}  {'p50/p99 ms bridge':>18}{'raw':>14}"
     )
     print(header)
@@ -385,7 +385,7 @@ def main() -> int:
         lat_b = f"{pa['bridge'].get('p50_ms', float('nan')):.2f}/{pa['bridge'].get('p99_ms', float('nan')):.2f}"
         lat_r = f"{pa['raw'].get('p50_ms', float('nan')):.2f}/{pa['raw'].get('p99_ms', float('nan')):.2f}"
         print(
-            f"{row['transport']:<9}{row['direction']:<14}{row['message']:>6}  "
+            f"{row['transport']:<10}{row['direction']:<14}{row['message']:>6}  "
             f"{un['bridge']['msgs_per_s']:>14,.0f}{un['raw']['msgs_per_s']:>10,.0f}{un['ratio']:>6.0%}"
             f"  {pa['bridge']['msgs_per_s']:>17,.1f}{pa['raw']['msgs_per_s']:>8,.1f}{pa['ratio']:>6.0%}"
             f"{lost:>6}  {lat_b:>18}{lat_r:>14}"

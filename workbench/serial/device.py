@@ -400,26 +400,21 @@ class NodeHandle:
     def negotiateTopics(self) -> None:  # noqa: N802
         """Announce every publisher and subscriber (TopicInfo) and count as configured."""
         info = get_type("rosserial_msgs/TopicInfo")
-        for pub in self.publishers:
-            if pub is not None:
-                ti = info(
-                    topic_id=pub.id_,
-                    topic_name=pub.topic_,
-                    message_type=pub.type_name,
-                    md5sum=pub.md5,
-                    buffer_size=self.output_size,
-                )
-                self.publish(pub.getEndpointType(), ti)
-        for sub in self.subscribers:
-            if sub is not None:
-                ti = info(
-                    topic_id=sub.id_,
-                    topic_name=sub.topic_,
-                    message_type=sub.type_name,
-                    md5sum=sub.md5,
-                    buffer_size=self.input_size,
-                )
-                self.publish(sub.getEndpointType(), ti)
+        endpoints: list[tuple[list[Any], int]] = [
+            (self.publishers, self.output_size),
+            (self.subscribers, self.input_size),
+        ]
+        for slots, buffer_size in endpoints:
+            for endpoint in slots:
+                if endpoint is not None:
+                    ti = info(
+                        topic_id=endpoint.id_,
+                        topic_name=endpoint.topic_,
+                        message_type=endpoint.type_name,
+                        md5sum=endpoint.md5,
+                        buffer_size=buffer_size,
+                    )
+                    self.publish(endpoint.getEndpointType(), ti)
         self.configured_ = True
 
     def publish(self, id: int, msg: Message) -> int:  # noqa: A002 - ros_lib's signature

@@ -112,12 +112,8 @@ class DeviceSubscriber:
         self.subscription.unregister()
 
 
-class DeviceServiceServer:
-    """A service the device offers, offered on the bus (its two TopicInfos share the name).
-
-    A bus call sends the request on the device's subscriber id and waits (up to
-    ``timeout`` seconds) for the frame its publisher id answers with.
-    """
+class _DeviceService:
+    """What both kinds of device service share: the type, the device's id, md5sums."""
 
     def __init__(self, node: Any, info: Any, send: Send, timeout: float) -> None:
         self.topic = info.topic_name
@@ -126,17 +122,28 @@ class DeviceServiceServer:
         self.log = node.get_logger()
         self._send = send
         self.timeout = timeout
-        self.id = -1  # the device's request subscriber, known once negotiated
-        self._lock = threading.Lock()
-        self._answered = threading.Event()
-        self._response: bytes | None = None
-        self.server = node.create_service(self.topic, self.service_class, self._call)
+        self.id = -1  # the device's subscriber (requests or responses), known once negotiated
 
     def request_md5(self) -> str:
         return md5sum(self.service_class.Request._type)
 
     def response_md5(self) -> str:
         return md5sum(self.service_class.Response._type)
+
+
+class DeviceServiceServer(_DeviceService):
+    """A service the device offers, offered on the bus (its two TopicInfos share the name).
+
+    A bus call sends the request on the device's subscriber id and waits (up to
+    ``timeout`` seconds) for the frame its publisher id answers with.
+    """
+
+    def __init__(self, node: Any, info: Any, send: Send, timeout: float) -> None:
+        super().__init__(node, info, send, timeout)
+        self._lock = threading.Lock()
+        self._answered = threading.Event()
+        self._response: bytes | None = None
+        self.server = node.create_service(self.topic, self.service_class, self._call)
 
     def handle(self, payload: bytes) -> None:
         """The device's response frame."""
@@ -161,25 +168,13 @@ class DeviceServiceServer:
         self.server.shutdown()
 
 
-class DeviceServiceClient:
+class DeviceServiceClient(_DeviceService):
     """A service the device calls: its requests go to the bus service, responses come back."""
 
     def __init__(self, node: Any, info: Any, send: Send, timeout: float) -> None:
-        self.topic = info.topic_name
-        self.type = info.message_type
-        self.service_class = get_service(self.type)
-        self.log = node.get_logger()
-        self._send = send
-        self.timeout = timeout
-        self.id = -1  # the device's response subscriber
+        super().__init__(node, info, send, timeout)
         self.log.info("Starting service client, waiting for service '%s'", self.topic)
         self.client = node.create_client(self.topic, self.service_class)
-
-    def request_md5(self) -> str:
-        return md5sum(self.service_class.Request._type)
-
-    def response_md5(self) -> str:
-        return md5sum(self.service_class.Response._type)
 
     def handle(self, payload: bytes) -> None:
         """A request frame from the device: call the bus service in the background."""

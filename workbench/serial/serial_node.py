@@ -75,20 +75,32 @@ def serve_serial(
                 stop.wait(RETRY)
                 continue
             opened_once, reported = True, False
-            if stop.wait(PTY_WAIT if is_pseudo_terminal(port) else BOOT_WAIT):
-                break
-            bridge.attach(link)
-            bridge.request_topics()
-            try:
-                bridge.serve(stop)
-            except LinkLost as error:
-                log.warn("%s; reconnecting", error.message)
-                bridge.link = None
-                link.close()
+            lost = _bridge(bridge, link, stop, PTY_WAIT if is_pseudo_terminal(port) else BOOT_WAIT)
+            if lost is not None:
+                log.warn("%s; reconnecting", lost.message)
                 link = None
                 stop.wait(RETRY)
     finally:
         _finish(node, bridge, link)
+
+
+def _bridge(bridge: Bridge, link: Any, stop: threading.Event, settle: float) -> LinkLost | None:
+    """Wait ``settle`` s for the board to boot, then bridge it until ``stop`` or its loss.
+
+    Returns:
+        The loss (the link is closed then and detached from the bridge), or None on stop.
+    """
+    if stop.wait(settle):
+        return None
+    bridge.attach(link)
+    bridge.request_topics()
+    try:
+        bridge.serve(stop)
+    except LinkLost as error:
+        bridge.link = None
+        link.close()
+        return error
+    return None
 
 
 def _finish(node: Any, bridge: Bridge, link: Any) -> None:
@@ -135,17 +147,10 @@ def serve_tcp(node: Any, tcp_port: int, stop: threading.Event) -> None:
             log.info("Established a socket connection from %s on port %s", *address)
             link = SocketLink(connection, f"{address[0]}:{address[1]}")
             log.info("calling startSerialClient")
-            if stop.wait(PTY_WAIT):
-                break
-            bridge.attach(link)
-            bridge.request_topics()
-            try:
-                bridge.serve(stop)
-            except LinkLost as error:
-                log.info("%s", error.message)
+            lost = _bridge(bridge, link, stop, PTY_WAIT)
+            if lost is not None:
+                log.info("%s", lost.message)
                 log.info("Client has exited, closing socket.")
-                bridge.link = None
-                link.close()
                 link = None
                 log.info("Waiting for socket connection")
     finally:
