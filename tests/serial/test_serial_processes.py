@@ -19,7 +19,7 @@ import sys
 import tty
 
 import pytest
-from process_helpers import Processes, free_port, private_core, wait_for
+from process_helpers import core_processes, free_port, wait_for
 from rosserial_bytes import REQUEST_TOPICS, TX_STOP, frame, string, topic_info
 
 pytestmark = pytest.mark.multiprocess
@@ -29,10 +29,8 @@ WAIT = 30.0
 
 @pytest.fixture
 def procs(tmp_path):
-    with private_core(tmp_path) as uri:
-        processes = Processes(uri, tmp_path)
+    with core_processes(tmp_path) as processes:
         yield processes
-        processes.stop_all()
 
 
 def messages(text: str) -> list[str]:
