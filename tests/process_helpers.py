@@ -118,6 +118,17 @@ def private_core(tmp_path: Path) -> Iterator[str]:
         _wait_or_kill(core)
 
 
+@contextlib.contextmanager
+def core_processes(tmp_path: Path) -> Iterator[Processes]:
+    """A private core and a :class:`Processes` on it for the block; stops every process after."""
+    with private_core(tmp_path) as uri:
+        processes = Processes(uri, tmp_path)
+        try:
+            yield processes
+        finally:
+            processes.stop_all()
+
+
 def _wait_or_kill(popen: subprocess.Popen, timeout: float = 10.0) -> None:
     try:
         popen.wait(timeout)

@@ -194,8 +194,8 @@ def test_a_third_party_distribution_adds_nodes(node_module: str, tmp_path: Path)
     info.mkdir()
     (info / "METADATA").write_text("Metadata-Version: 2.1\nName: my_robot\nVersion: 1.0\n")
     (info / "entry_points.txt").write_text(
-        f"[{GROUP}]\nrosserial_python/serial_node.py = {node_module}:main\n"
+        f"[{GROUP}]\nmy_robot/driver_node.py = {node_module}:main\n"
     )
-    assert declared_nodes()["rosserial_python/serial_node.py"] == f"{node_module}:main"
-    assert run_node("rosserial_python", "serial_node", ["/dev/ttyACM0"]) == 3
+    assert declared_nodes()["my_robot/driver_node.py"] == f"{node_module}:main"
+    assert run_node("my_robot", "driver_node", ["/dev/ttyACM0"]) == 3
     assert json.loads((tmp_path / "argv.json").read_text()) == ["/dev/ttyACM0"]

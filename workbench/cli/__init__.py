@@ -64,6 +64,8 @@ COMMANDS: dict[str, str] = {
     # mapping (Experiment 10)
     "slam": "build a 2D occupancy map from a laser log (gmapping)",
     "map": "show and convert saved maps (map_server)",
+    # hardware (Experiment 11)
+    "serial": "bridge an Arduino (rosserial) to the bus; run a virtual board (serial_node.py)",
 }
 
 
