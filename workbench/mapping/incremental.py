@@ -88,6 +88,7 @@ class Slam:
         self._grid: OccupancyGrid | None = None
         self._grid_nodes = 0
         self._grid_version = -1
+        self._drawn_poses = np.zeros((0, 3))  # keyframe poses when they were drawn
 
     # ----------------------------------------------------------------- public
     def add_scan(self, scan: Scan, odom_pose: np.ndarray | None = None) -> np.ndarray:
@@ -160,15 +161,15 @@ class Slam:
 
         It starts as a ``map_size`` square round the first pose and grows to
         take in every scan. Keyframes added since the last call are
-        integrated into the grid; after an optimisation moved the graph, the
-        grid is rebuilt.
+        integrated into the grid; after an optimisation moved a drawn keyframe's
+        scan by half a cell or more, the grid is rebuilt.
         """
         cfg = self.config
         res = cfg.resolution if resolution is None else float(resolution)
         if (
             self._grid is None
-            or self._grid_version != self._version
             or self._grid.resolution != res
+            or (self._grid_version != self._version and self._moved_since_drawn(res))
         ):
             first = self.graph.nodes[0] if len(self.graph.nodes) else np.zeros(3)
             half = 0.5 * cfg.map_size
@@ -177,8 +178,13 @@ class Slam:
             self._grid = OccupancyGrid(size, size, res, (low[0], low[1], 0.0))
             self._grid_nodes = 0
             self._grid_version = self._version
+            self._drawn_poses = np.zeros((0, 3))
         grid = self._grid
-        for node in range(self._grid_nodes, len(self._frames)):
+        start = self._grid_nodes
+        self._drawn_poses = np.vstack(
+            [self._drawn_poses[:start], self.graph.nodes[start : len(self._frames)]]
+        )
+        for node in range(start, len(self._frames)):
             frame = self._frames[node]
             pose = self.graph.nodes[node]
             ends = transform_points(pose, free_ends(frame.scan, cfg.max_urange))
@@ -193,7 +199,21 @@ class Slam:
                 free_range=cfg.max_urange,
             )
         self._grid_nodes = len(self._frames)
+        self._grid_version = self._version
         return grid
+
+    def _moved_since_drawn(self, resolution: float) -> bool:
+        """Whether an optimisation moved a drawn keyframe's scan by half a cell or more (at
+        the end of its longest beam): smaller corrections keep the grid, larger rebuild it."""
+        drawn = self._grid_nodes
+        if drawn == 0:
+            return False
+        now = self.graph.nodes[:drawn]
+        then = self._drawn_poses[:drawn]
+        reach = max(float(self.config.max_urange), 1.0)
+        shift = np.hypot(*(now[:, :2] - then[:, :2]).T)
+        turn = np.abs(np.angle(np.exp(1j * (now[:, 2] - then[:, 2]))))
+        return bool(np.max(shift + reach * turn) >= 0.5 * resolution)
 
     # --------------------------------------------------------------- internal
     def _due(self, delta: np.ndarray, dt: float) -> bool:
