@@ -118,23 +118,46 @@ class RemoteParams:
         self._uri = uri
 
     def _ask(self, op: str, timeout: float = 5.0, **args: Any) -> Any:
+        """Send parameter request ``op`` to the core and return its JSON answer.
+
+        Raises:
+            ParameterError: The core refused the request (no such parameter, a bound).
+            CoreError: The core did not answer in ``timeout`` seconds, or not in JSON.
+        """
         replies = self._session.get(f"wb/p/{op}", payload=json.dumps(args), timeout=timeout)
         for reply in replies:
             if reply.ok is not None:
-                return json.loads(reply.ok.payload.to_string())
-            error = json.loads(reply.err.payload.to_string())
-            if error.get("kind") == "missing":
-                raise ParameterError(error["message"])
-            raise ParameterError(error["message"])
-        raise CoreError(
-            f"the core at {self._uri} did not answer a parameter request",
-            hint="is 'workbench core' still running?",
+                return self._json(reply.ok.payload.to_bytes(), op)
+            text = reply.err.payload.to_bytes()
+            try:
+                error = json.loads(text)
+                message = str(error["message"])
+            except (ValueError, TypeError, KeyError):  # Zenoh's own error, e.g. a timeout
+                raise self._no_answer(op, timeout, text) from None
+            raise ParameterError(message)
+        raise self._no_answer(op, timeout, b"")
+
+    def _json(self, data: bytes, op: str) -> Any:
+        try:
+            return json.loads(data)
+        except (ValueError, RecursionError):
+            raise CoreError(
+                f"the core at {self._uri} sent a garbled answer to parameter request '{op}'",
+                hint="is it a workbench core of the same version?",
+            ) from None
+
+    def _no_answer(self, op: str, timeout: float, detail: bytes) -> CoreError:
+        reason = detail.decode("utf-8", "replace").strip()[:80]
+        return CoreError(
+            f"the core at {self._uri} did not answer parameter request '{op}' within "
+            f"{timeout:g} s" + (f" ({reason})" if reason else ""),
+            hint="is 'workbench core' still running, and not overloaded?",
         )
 
     def set(self, name: str, value: Any) -> None:
-        from workbench.bus.params import plain_value
+        from workbench.bus.params import checked_value
 
-        self._ask("set", name=name, value=plain_value(value, name))
+        self._ask("set", name=name, value=checked_value(value, name))
 
     def get(self, name: str) -> Any:
         return self._ask("get", name=name)
@@ -200,7 +223,7 @@ class ZenohTransport:
         if not self._ping_core():
             self.session.close()
             raise CoreError(
-                f"something listens at {uri} but it is not a workbench core",
+                f"something listens at {uri} but does not answer as a workbench core",
                 hint="start 'workbench core' there, or point WORKBENCH_MASTER_URI elsewhere",
             ) from None
         self._graph_sub = self.session.liveliness().declare_subscriber(
