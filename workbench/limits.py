@@ -273,8 +273,7 @@ def check_yaml(
         total_size = sum(frame[1] for frame in stack)
         if total_nodes > limits.max_nodes:
             raise error(
-                f"{what} has more than {limits.max_nodes:,} elements once its aliases are "
-                "expanded",
+                f"{what} has more than {limits.max_nodes:,} elements once its aliases are expanded",
                 path=path,
                 line=line,
                 hint="is it a YAML 'billion laughs' bomb?",
