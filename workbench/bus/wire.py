@@ -23,6 +23,7 @@ import time
 from collections.abc import Callable
 from typing import Any, NoReturn, TypeVar
 
+from workbench.errors import WorkbenchError
 from workbench.limits import MiB, human_bytes
 
 #: Largest serialized message or service request/response sent to another process, bytes.
@@ -34,7 +35,7 @@ EXIT_TRANSPORT_FAILED = 75
 F = TypeVar("F", bound=Callable[..., Any])
 
 
-def check_size(data: bytes, what: str, error: type[Exception]) -> bytes:
+def check_size(data: bytes, what: str, error: type[WorkbenchError]) -> bytes:
     """``data`` if it fits on the wire.
 
     Args:
