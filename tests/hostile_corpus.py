@@ -58,6 +58,17 @@ def _long_line_log(tmp: Path) -> str:
     return str(path)
 
 
+def _map_with_fifo_image(tmp: Path) -> str:
+    """A map YAML whose image is a FIFO."""
+    os.mkfifo(tmp / "map.pgm")
+    path = tmp / "map.yaml"
+    path.write_text(
+        "image: map.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\n"
+        "occupied_thresh: 0.65\nfree_thresh: 0.196\n"
+    )
+    return str(path)
+
+
 def _dev_zero(tmp: Path) -> str:
     return "/dev/zero"
 
@@ -75,6 +86,7 @@ GENERATORS: dict[str, Callable[[Path], str]] = {
     "long_line_log": _long_line_log,
     "dev_zero": _dev_zero,
     "directory": _directory,
+    "map_with_fifo_image": _map_with_fifo_image,
 }
 
 
