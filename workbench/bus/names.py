@@ -159,7 +159,7 @@ def parse_command_line(argv: list[str]) -> CommandLine:
     Raises:
         InvalidNameError: A remapping names an invalid graph name.
     """
-    import yaml
+    from workbench.limits import load_yaml
 
     result = CommandLine()
     for arg in argv:
@@ -177,8 +177,10 @@ def parse_command_line(argv: list[str]) -> CommandLine:
             name = key[1:]
             check_name(name, "parameter name")
             try:
-                result.params[name] = yaml.safe_load(value) if value else ""
-            except yaml.YAMLError:
+                result.params[name] = load_yaml(value, f"_{name}", error=BusError) if value else ""
+            except BusError as error:
+                if "is not valid YAML" not in error.message:
+                    raise  # past a bound; text that is not YAML is a string, as in rospy
                 result.params[name] = value
         else:
             check_name(key, "remapping source")
