@@ -17,6 +17,7 @@ import selectors
 import shlex
 import subprocess
 import time
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -119,15 +120,24 @@ def command_value(command: str, ctx: LaunchContext, where: str, line: int | None
         raise ctx.error(f"{where}: {error.one_line()}", line) from None
 
 
-def textfile_value(name: str, ctx: LaunchContext, where: str, line: int | None) -> Any:
-    """The contents of ``textfile=`` (a :class:`Deferred` in a dry run)."""
+def _outside_file(
+    name: str, ctx: LaunchContext, where: str, line: int | None, read: Callable[[Path], Any]
+) -> Any:
+    """``read(file)`` of a file the launch file names (a :class:`Deferred` in a dry run)."""
     target = ctx.resolve_file(name)
     if ctx.shared.dry_run:
         return Deferred("contents of file", str(target))
     try:
-        return read_text_bounded(target, "textfile", LaunchError)
+        return read(target)
     except LaunchError as error:
         raise ctx.error(f"{where}: {error.one_line()}", line) from None
+
+
+def textfile_value(name: str, ctx: LaunchContext, where: str, line: int | None) -> Any:
+    """The contents of ``textfile=`` (a :class:`Deferred` in a dry run)."""
+    return _outside_file(
+        name, ctx, where, line, lambda path: read_text_bounded(path, "textfile", LaunchError)
+    )
 
 
 def rosparam_data(
@@ -140,13 +150,9 @@ def rosparam_data(
         LaunchError: An unreadable file, invalid YAML or YAML past the bounds.
     """
     if file is not None:
-        target = ctx.resolve_file(file)
-        if ctx.shared.dry_run:
-            return Deferred("contents of file", str(target))
-        try:
-            return load_yaml_file(target, "rosparam file", LaunchError)
-        except LaunchError as error:
-            raise ctx.error(f"{where}: {error.one_line()}", line) from None
+        return _outside_file(
+            file, ctx, where, line, lambda path: load_yaml_file(path, "rosparam file", LaunchError)
+        )
     try:
         return load_yaml(inline, f"{where}: the YAML", error=LaunchError)
     except LaunchError as error:  # its line counts from the element's
