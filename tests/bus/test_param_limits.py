@@ -74,6 +74,19 @@ def test_requests_do_not_copy_the_tree(monkeypatch):
     assert params.search("/big/x/y", "p5") == "/big/p5"
 
 
+def _connect(uri: str):
+    """A bus joined to the core at ``uri``, once it answers (it may be slow to, under load)."""
+    from workbench.bus import Bus
+    from workbench.bus.errors import CoreError
+
+    for _ in range(6):
+        try:
+            return Bus.connect(uri)
+        except CoreError:
+            continue  # each attempt waits up to 5 s for the core to answer
+    return Bus.connect(uri)
+
+
 def _raw_request(session, op: str, payload: bytes, timeout: float = 20.0):
     """Send a parameter request as any Zenoh client could, bypassing workbench's checks."""
     for reply in session.get(f"wb/p/{op}", payload=payload, timeout=timeout):
@@ -118,7 +131,6 @@ def test_the_core_answers_hostile_requests_and_keeps_serving(tmp_path):
 @pytest.mark.multiprocess
 def test_a_core_that_does_not_answer_is_one_line_naming_it(tmp_path):
     pytest.importorskip("zenoh")
-    from workbench.bus import Bus
 
     port = free_port()
     uri = f"tcp/127.0.0.1:{port}"
@@ -126,7 +138,7 @@ def test_a_core_that_does_not_answer_is_one_line_naming_it(tmp_path):
     core = processes.start("-m", "workbench", "core", name="core")
     try:
         assert wait_port(port), processes.output(core)
-        bus = Bus.connect(uri)
+        bus = _connect(uri)
         try:
             bus.params.set("/x", 1)
             core.send_signal(signal.SIGSTOP)  # a core that hangs (or is swamped)
