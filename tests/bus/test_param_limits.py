@@ -6,7 +6,7 @@ import json
 import signal
 
 import pytest
-from process_helpers import Processes, free_port, private_core, wait_for, wait_port
+from process_helpers import Processes, free_port, joined_bus, private_core, wait_for, wait_port
 
 from workbench.bus.errors import CoreError
 from workbench.bus.params import VALUE_LIMITS, ParameterError, ParameterServer
@@ -74,19 +74,6 @@ def test_requests_do_not_copy_the_tree(monkeypatch):
     assert params.search("/big/x/y", "p5") == "/big/p5"
 
 
-def _connect(uri: str):
-    """A bus joined to the core at ``uri``, once it answers (it may be slow to, under load)."""
-    from workbench.bus import Bus
-    from workbench.bus.errors import CoreError
-
-    for _ in range(6):
-        try:
-            return Bus.connect(uri)
-        except CoreError:
-            continue  # each attempt waits up to 5 s for the core to answer
-    return Bus.connect(uri)
-
-
 def _raw_request(session, op: str, payload: bytes, timeout: float = 20.0):
     """Send a parameter request as any Zenoh client could, bypassing workbench's checks."""
     for reply in session.get(f"wb/p/{op}", payload=payload, timeout=timeout):
@@ -99,7 +86,6 @@ def _raw_request(session, op: str, payload: bytes, timeout: float = 20.0):
 @pytest.mark.multiprocess
 def test_the_core_answers_hostile_requests_and_keeps_serving(tmp_path):
     zenoh = pytest.importorskip("zenoh")
-    from workbench.bus import Bus
     from workbench.bus.zconfig import client_config
 
     with private_core(tmp_path) as uri, zenoh.open(client_config(uri)) as session:
@@ -119,7 +105,7 @@ def test_the_core_answers_hostile_requests_and_keeps_serving(tmp_path):
             assert "\n" not in message and len(message) < 600, (what, message)
         kind, body = _raw_request(session, "set", b"{}")
         assert "bad parameter request 'set'" in json.loads(body)["message"]
-        bus = Bus.connect(uri)
+        bus = joined_bus(uri)
         try:
             bus.params.set("/still/here", 5)
             assert bus.params.get("/still/here") == 5
@@ -138,7 +124,7 @@ def test_a_core_that_does_not_answer_is_one_line_naming_it(tmp_path):
     core = processes.start("-m", "workbench", "core", name="core")
     try:
         assert wait_port(port), processes.output(core)
-        bus = _connect(uri)
+        bus = joined_bus(uri)
         try:
             bus.params.set("/x", 1)
             core.send_signal(signal.SIGSTOP)  # a core that hangs (or is swamped)

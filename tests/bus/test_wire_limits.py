@@ -10,7 +10,7 @@ import subprocess
 import textwrap
 
 import pytest
-from process_helpers import Processes, private_core
+from process_helpers import Processes, joined_bus, private_core
 
 from workbench.bus.errors import ServiceError
 from workbench.bus.names import MAX_NAME_LENGTH, InvalidNameError, check_name, resolve
@@ -53,12 +53,12 @@ def test_a_huge_turtle_name_is_refused_and_turtlesim_keeps_working(tmp_path, run
 @pytest.mark.multiprocess
 def test_messages_and_calls_past_the_size_bound_are_refused_where_they_are_sent(tmp_path):
     pytest.importorskip("zenoh")
-    from workbench.bus import Bus, Node
+    from workbench.bus import Node
     from workbench.msgs.std_msgs import String
     from workbench.msgs.turtlesim import Spawn
 
     with private_core(tmp_path) as uri:
-        bus = Bus.connect(uri)
+        bus = joined_bus(uri)
         try:
             node = Node("sender", bus=bus)
             pub = node.create_publisher("/big", String, queue_size=1)
@@ -66,7 +66,7 @@ def test_messages_and_calls_past_the_size_bound_are_refused_where_they_are_sent(
             with pytest.raises(MessageError, match="a message on /big is 64.0 MiB, more than"):
                 pub.publish(String(data=too_big))
             node.create_service("/spawn", Spawn, lambda req: Spawn.Response(name=req.name))
-            other = Bus.connect(uri)
+            other = joined_bus(uri)
             try:
                 client = Node("caller", bus=other).create_client("/spawn", Spawn)
                 client.wait_for_service(timeout=10)
