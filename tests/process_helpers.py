@@ -98,6 +98,22 @@ class Processes:
             _wait_or_kill(popen)
 
 
+def joined_bus(uri: str, attempts: int = 6):
+    """A ``Bus`` joined to the core at ``uri`` once it answers (slow to, on a loaded machine).
+
+    Each attempt waits up to 5 s for the core's parameter server, as ``Bus.connect`` does.
+    """
+    from workbench.bus import Bus
+    from workbench.bus.errors import CoreError
+
+    for _ in range(attempts - 1):
+        try:
+            return Bus.connect(uri)
+        except CoreError:
+            continue
+    return Bus.connect(uri)
+
+
 @contextlib.contextmanager
 def private_core(tmp_path: Path) -> Iterator[str]:
     """A ``workbench core`` on a free loopback port for the block; yields its URI."""

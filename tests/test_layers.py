@@ -31,6 +31,7 @@ LAYERS: dict[str, int] = {
     # the shared pose/shape vocabulary
     "workbench": 0,
     "errors": 0,
+    "limits": 0,
     "optional": 0,
     "paths": 0,
     "entry_points": 0,

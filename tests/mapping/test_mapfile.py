@@ -142,7 +142,7 @@ def test_bad_yaml_values_and_syntax(tmp_path):
     with pytest.raises(MapFileError, match="resolution"):
         load_map(_write_yaml(tmp_path / "c.yaml", resolution="abc"))
     (tmp_path / "d.yaml").write_text("image: m.pgm\nresolution: [0.05\n")
-    with pytest.raises(MapFileError, match="invalid YAML") as info:
+    with pytest.raises(MapFileError, match="not valid YAML") as info:
         load_map(tmp_path / "d.yaml")
     assert info.value.line is not None
 

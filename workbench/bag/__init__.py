@@ -12,7 +12,13 @@ Use::
 
 from __future__ import annotations
 
-from workbench.bag.errors import BagDamagedError, BagFormatError, BagNotFoundError, BagWriteError
+from workbench.bag.errors import (
+    BagDamagedError,
+    BagFormatError,
+    BagNotFoundError,
+    BagWarning,
+    BagWriteError,
+)
 from workbench.bag.info import format_info
 from workbench.bag.play import PlayReport, play
 from workbench.bag.reader import (
@@ -32,6 +38,7 @@ __all__ = [
     "BagMessage",
     "BagNotFoundError",
     "BagSummary",
+    "BagWarning",
     "BagWriteError",
     "BagWriter",
     "PlayReport",

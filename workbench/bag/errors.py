@@ -1,6 +1,12 @@
-"""Errors of the bag tools: missing, unreadable, damaged and unwritable bags."""
+"""Errors of the bag tools: missing, unreadable, damaged and unwritable bags; damage warnings."""
 
 from __future__ import annotations
+
+import contextlib
+import sys
+import warnings
+from collections.abc import Iterator
+from typing import Any
 
 from workbench.errors import BagError
 
@@ -27,3 +33,24 @@ class BagDamagedError(BagError):
 
 class BagWriteError(BagError):
     """The bag cannot be written (directory missing, permission, disk full)."""
+
+
+class BagWarning(UserWarning):
+    """Part of a bag could not be read and was skipped (the text names the byte offset)."""
+
+
+@contextlib.contextmanager
+def warnings_as_lines(stream: Any = None) -> Iterator[None]:
+    """Print every :class:`BagWarning` of the block as one ``[WARN] ...`` line (command line)."""
+
+    def show(message: Any, category: Any, *args: Any, **kwargs: Any) -> None:
+        if issubclass(category, BagWarning):
+            print(f"[WARN] {message}", file=stream or sys.stderr, flush=True)
+        else:
+            previous(message, category, *args, **kwargs)
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("always", BagWarning)
+        previous = warnings.showwarning
+        warnings.showwarning = show
+        yield

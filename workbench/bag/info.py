@@ -79,8 +79,10 @@ def format_info(summary: BagSummary, *, name: str | None = None) -> str:
             if conns_per_topic[topic] > 1:
                 line += f" ({conns_per_topic[topic]} connections)"
             rows.append(("topics" if i == 0 else "", line.rstrip()))
-    if summary.damage and not summary.indexed:
-        rows.append(("warning", f"recovered what was readable: {summary.damage}"))
+    for i, text in enumerate(summary.warnings):
+        rows.append(("warning" if i == 0 else "", f"recovered what was readable: {text}"))
+    if not summary.warnings and not summary.indexed:
+        rows.append(("warning", "recovered what was readable: the bag has no index"))
     first = max(len(field) for field, _ in rows) + 1
     lines = [f"{(field + ':') if field else '':<{first}} {value}" for field, value in rows]
     return "\n".join(lines).rstrip()

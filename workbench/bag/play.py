@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from workbench.bag.errors import BagError
-from workbench.bag.reader import iter_raw, summarize
+from workbench.bag.reader import read_messages, summarize
 
 PublishFunction = Callable[[str, str, Any], None]
 #: ``clock(bag_time_ns)`` publishes ``/clock``.
@@ -82,13 +82,16 @@ def play(
         return PlayReport(0, 0, 0.0, 0.0)
     if delay > 0:
         sleep(delay)
-    from workbench.bag.types import decode
-
-    begin_ns = first_ns + round(start * 1e9)
     while True:
         loops += 1
         t0_wall = now()
-        for conn, stamp, data in iter_raw(path, wanted):
+        # The bag's time starts at its first message as read, not at what the index says:
+        # a damaged index (a chunk "starting" in 2106, or at 0) must not make it wait forever.
+        begin_ns: int | None = None
+        for message in read_messages(path, wanted):
+            stamp = message.stamp_ns
+            if begin_ns is None:
+                begin_ns = stamp + round(start * 1e9)
             if stamp < begin_ns:
                 continue
             target = t0_wall + (stamp - begin_ns) / 1e9 / rate
@@ -103,7 +106,7 @@ def play(
                 if remaining <= 0:
                     break
                 sleep(min(remaining, CLOCK_PERIOD) if clock is not None else remaining)
-            publish(conn.topic, conn.typename, decode(conn, data))
+            publish(message.topic, message.typename, message.msg)
             published += 1
             if progress is not None:
                 progress(stamp / 1e9, (stamp - begin_ns) / 1e9)

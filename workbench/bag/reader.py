@@ -1,10 +1,14 @@
 """Reading ROS 1 bags (v2.0): summary, messages, and recovery of damaged files.
 
-An intact bag is read through ``rosbags.rosbag1.Reader`` (its index).
-A bag without a usable index -- a ``.bag.active`` left by a recorder that
-was killed, a file cut short by a full disk, a corrupt index -- is read by
-walking its records from the start with rosbags' record parser, the way
-``rosbag reindex`` does, and everything up to the damage is returned.
+A bag is read through its index when the index can be trusted, else by walking
+its records from the start (a ``.bag.active`` left by a recorder that was
+killed, a file cut short by a full disk, a damaged index), as ``rosbag
+reindex`` does (:mod:`workbench.bag.layout`). A damaged chunk -- bytes that do
+not decompress, a record that runs past its end -- is skipped with a
+:class:`BagWarning` naming its byte offset, and every message that can be read
+is returned, in time order. A message whose bytes do not decode is skipped the
+same way. Nothing else than :class:`~workbench.errors.BagError` is raised, and
+only when nothing at all can be read.
 
 Times are nanoseconds since the epoch (``int``) in the raw API and seconds
 (``float``) in :class:`BagMessage`.
@@ -12,53 +16,24 @@ Times are nanoseconds since the epoch (``int``) in the raw API and seconds
 
 from __future__ import annotations
 
+import heapq
+import itertools
 import os
+import warnings
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
-from io import BytesIO
 from pathlib import Path
-from typing import Any, BinaryIO, NamedTuple, cast
+from typing import Any, NamedTuple
 
-from rosbags.interfaces import ConnectionExtRosbag1
-from rosbags.rosbag1 import Reader as _RosbagsReader
-from rosbags.rosbag1.reader import (
-    Header,
-    ReaderError,
-    RecordType,
-    decompressors,
-    read_bytes,
-    read_uint32,
-)
-from rosbags.typesys.msg import denormalize_msgtype
+from workbench.bag.errors import BagDamagedError, BagFormatError, BagNotFoundError, BagWarning
+from workbench.bag.layout import Chunk, Connection, chunk_records, read_index, walk
+from workbench.bag.records import MAGIC, Corrupt
+from workbench.limits import check_regular_file
 
-from workbench.bag.errors import BagDamagedError, BagFormatError, BagNotFoundError
-
-_MAGIC = b"#ROSBAG V2.0\n"
-
-
-@dataclass(frozen=True)
-class BagConnection:
-    """One connection record: a topic with its type as the recorder saw it."""
-
-    id: int
-    topic: str
-    typename: str  # ROS 1 style, e.g. "geometry_msgs/Twist"
-    md5sum: str
-    definition: str
-    callerid: str | None = None
-    latching: bool = False
-
-
-@dataclass
-class ChunkSummary:
-    """One chunk: compression, sizes in bytes, time span (ns) and counts per connection."""
-
-    compression: str
-    uncompressed_size: int
-    compressed_size: int
-    start_ns: int
-    end_ns: int
-    counts: dict[int, int] = field(default_factory=dict)
+#: A connection record: a topic with its type as the recorder saw it.
+BagConnection = Connection
+#: One chunk: position, compression, sizes (bytes), time span (ns), counts per connection.
+ChunkSummary = Chunk
 
 
 @dataclass
@@ -69,17 +44,20 @@ class BagSummary:
         path: The file.
         size: File size in bytes.
         connections: By connection id.
-        chunks: In file order.
-        indexed: True when read through the index; False when recovered by a scan.
-        damage: Why the scan stopped early (None for an intact bag).
+        chunks: In file order (the readable ones).
+        indexed: True when read through the index; False when recovered by a walk.
+        damage: What was wrong, joined (None for an intact indexed bag; "no index" for
+            an intact bag without one).
+        warnings: What was skipped, one text each, naming byte offsets.
     """
 
     path: Path
     size: int
-    connections: dict[int, BagConnection]
-    chunks: list[ChunkSummary]
+    connections: dict[int, Connection]
+    chunks: list[Chunk]
     indexed: bool = True
     damage: str | None = None
+    warnings: list[str] = field(default_factory=list)
 
     @property
     def message_count(self) -> int:
@@ -141,241 +119,120 @@ def _check_file(path: Path) -> None:
         raise BagNotFoundError("bag file does not exist", path=path, hint=hint)
     if path.is_dir():
         raise BagFormatError("is a directory, not a bag file", path=path)
+    check_regular_file(path, "bag", BagFormatError)
     with path.open("rb") as f:
-        magic = f.read(len(_MAGIC))
+        magic = f.read(len(MAGIC))
     if not magic:
         raise BagDamagedError("bag file is empty", path=path, hint="nothing was recorded")
-    if magic.startswith(b"#ROSBAG V") and magic != _MAGIC:
+    if magic.startswith(b"#ROSBAG V") and magic != MAGIC:
         version = magic[9:].split(b"\n")[0].decode(errors="replace")
         raise BagFormatError(
             f"bag version {version} is not supported (only 2.0)",
             path=path,
             hint="migrate it with 'rosbag fix' on a ROS machine",
         )
-    if magic != _MAGIC:
+    if magic != MAGIC:
         raise BagFormatError("not a ROS bag (no '#ROSBAG V2.0' magic)", path=path)
 
 
 def summarize(path: str | os.PathLike[str]) -> BagSummary:
-    """Read a bag's summary; a damaged bag is scanned and its readable part summarized.
+    """Read a bag's summary; a damaged bag is walked and its readable part summarized.
 
     Raises:
         BagNotFoundError: no such file.
-        BagFormatError: not a v2.0 bag.
+        BagFormatError: not a v2.0 bag (or not a regular file).
         BagDamagedError: nothing at all could be read.
     """
     path = Path(path)
     _check_file(path)
-    try:
-        return _summarize_indexed(path)
-    except (ReaderError, AssertionError, KeyError, ValueError, OSError):
-        pass
-    return _scan(path, want_messages=False)[0]
-
-
-def _ros1_ext(connection: Any) -> ConnectionExtRosbag1:
-    """The ROS 1 part of a rosbags connection (a .bag file's connections all have one)."""
-    return cast(ConnectionExtRosbag1, connection.ext)
-
-
-def _summarize_indexed(path: Path) -> BagSummary:
-    reader = _RosbagsReader(path)
-    reader.open()
-    try:
-        connections = {
-            c.id: BagConnection(
-                c.id,
-                c.topic,
-                denormalize_msgtype(c.msgtype),
-                c.digest,
-                c.msgdef.data,
-                _ros1_ext(c).callerid,
-                bool(_ros1_ext(c).latching),
-            )
-            for c in reader.connections
-        }
-        chunks = []
-        bio = reader.bio
-        assert bio is not None
-        for info in reader.chunk_infos:
-            bio.seek(info.pos)
-            header = Header.read(bio, RecordType.CHUNK)
-            compressed = read_uint32(bio)
-            chunks.append(
-                ChunkSummary(
-                    header.get_string("compression"),
-                    header.get_uint32("size"),
-                    compressed,
-                    info.start_time,
-                    info.end_time - 1,  # rosbags reports end + 1 ns
-                    dict(info.connection_counts),
-                )
-            )
-    finally:
-        reader.close()
-    return BagSummary(path, path.stat().st_size, connections, chunks, indexed=True)
-
-
-# --- scanning (recovery) -----------------------------------------------------------------
-
-
-def _read_connection_data(header: Header, bio: BinaryIO) -> BagConnection:
-    conn = header.get_uint32("conn")
-    topic = header.get_string("topic")
-    data = Header.read(bio)
-    latching = data.get_string("latching") if "latching" in data else ""
-    return BagConnection(
-        conn,
-        topic,
-        data.get_string("type"),
-        data.get_string("md5sum"),
-        data.get_string("message_definition"),
-        data.get_string("callerid") if "callerid" in data else None,
-        latching not in ("", "0"),
-    )
-
-
-def _scan(
-    path: Path, *, want_messages: bool
-) -> tuple[BagSummary, list[tuple[BagConnection, int, bytes]]]:
-    """Walk the records from the start; stop at the first damage."""
-    connections: dict[int, BagConnection] = {}
-    chunks: list[ChunkSummary] = []
-    messages: list[tuple[BagConnection, int, bytes]] = []
-    damage: str | None = None
-    with path.open("rb") as bio:
-        bio.read(len(_MAGIC))
+    with path.open("rb") as stream:
+        size = os.fstat(stream.fileno()).st_size
         try:
-            header = Header.read(bio, RecordType.BAGHEADER)
-            index_pos = header.get_uint64("index_pos")
-            bio.seek(read_uint32(bio), os.SEEK_CUR)
-        except ReaderError as error:
-            raise BagDamagedError(
-                f"bag header is unreadable ({error})",
-                path=path,
-                hint="the file is not a usable bag",
-            ) from None
-        end = path.stat().st_size
-        while bio.tell() < end:
-            if index_pos and bio.tell() >= index_pos:
-                break  # the index section: everything before it has been read
-            start = bio.tell()
+            layout = read_index(stream, size)
+        except Corrupt as error:
             try:
-                header = Header.read(bio)
-                op = header.get_uint8("op")
-                if op == RecordType.CHUNK:
-                    chunk, damage = _scan_chunk(header, bio, connections, messages, want_messages)
-                    if chunk.counts or damage is None:
-                        chunks.append(chunk)
-                    if damage:
-                        break
-                elif op == RecordType.CONNECTION:
-                    conn = _read_connection_data(header, bio)
-                    connections.setdefault(conn.id, conn)
-                elif op in (RecordType.IDXDATA, RecordType.CHUNK_INFO):
-                    bio.seek(read_uint32(bio), os.SEEK_CUR)
-                else:
-                    damage = f"unexpected record type {op} at byte {start}"
-                    break
-            except (ReaderError, ValueError) as error:
-                damage = f"truncated or corrupt at byte {start} ({error})"
-                break
-    summary = BagSummary(
-        path, path.stat().st_size, connections, chunks, indexed=False, damage=damage or "no index"
+                layout = walk(stream, size)
+            except Corrupt as header_error:
+                raise BagDamagedError(
+                    f"bag header is unreadable ({header_error.reason})",
+                    path=path,
+                    hint="the file is not a usable bag",
+                ) from None
+            if error.reason != "the bag has no index":
+                layout.warnings.insert(
+                    0, f"the index is damaged ({error.reason}); read the records one by one"
+                )
+    if not layout.connections and not any(c.counts for c in layout.chunks) and layout.warnings:
+        raise BagDamagedError(f"no readable messages: {layout.warnings[0]}", path=path)
+    damage = "; ".join(layout.warnings) or (None if layout.indexed else "no index")
+    return BagSummary(
+        path, size, layout.connections, layout.chunks, layout.indexed, damage, layout.warnings
     )
-    if not connections and not chunks and damage:
-        raise BagDamagedError(f"no readable messages: {damage}", path=path)
-    return summary, messages
-
-
-def _scan_chunk(
-    header: Header,
-    bio: BinaryIO,
-    connections: dict[int, BagConnection],
-    messages: list[tuple[BagConnection, int, bytes]],
-    want_messages: bool,
-) -> tuple[ChunkSummary, str | None]:
-    compression = header.get_string("compression")
-    size = header.get_uint32("size")
-    datasize = read_uint32(bio)
-    raw = bio.read(datasize)
-    damage = None
-    if len(raw) < datasize:
-        damage = f"chunk cut short ({len(raw)} of {datasize} bytes)"
-    try:
-        data = decompressors[compression](raw)
-    except KeyError:
-        return ChunkSummary(
-            compression, size, datasize, 0, 0
-        ), f"unknown compression {compression!r}"
-    except Exception:  # a cut-off compressed chunk cannot be decompressed at all
-        return ChunkSummary(
-            compression, size, datasize, 0, 0
-        ), damage or "chunk does not decompress"
-    chunk = ChunkSummary(compression, size, datasize, 2**63 - 1, 0)
-    inner = BytesIO(data)
-    while inner.tell() < len(data):
-        try:
-            record = Header.read(inner)
-            op = record.get_uint8("op")
-            if op == RecordType.CONNECTION:
-                conn = _read_connection_data(record, inner)
-                connections.setdefault(conn.id, conn)
-            elif op == RecordType.MSGDATA:
-                cid = record.get_uint32("conn")
-                stamp = record.get_time("time")
-                payload = read_bytes(inner, read_uint32(inner))
-                if cid not in connections:
-                    damage = damage or f"message on unknown connection {cid}"
-                    break
-                chunk.counts[cid] = chunk.counts.get(cid, 0) + 1
-                chunk.start_ns = min(chunk.start_ns, stamp)
-                chunk.end_ns = max(chunk.end_ns, stamp)
-                if want_messages:
-                    messages.append((connections[cid], stamp, payload))
-            else:
-                damage = damage or f"unexpected record type {op} inside a chunk"
-                break
-        except (ReaderError, ValueError):
-            damage = damage or "corrupt record inside a chunk"
-            break
-    if not chunk.counts:
-        chunk.start_ns = chunk.end_ns = 0
-    return chunk, damage
 
 
 # --- messages ---------------------------------------------------------------------------
 
 
+class _Reporter:
+    """Issues each damage warning of one read once, as a :class:`BagWarning`."""
+
+    def __init__(self, path: Path) -> None:
+        self.path = path
+        self.seen: set[str] = set()
+
+    def __call__(self, texts: Iterable[str]) -> None:
+        for text in texts:
+            if text not in self.seen:
+                self.seen.add(text)
+                warnings.warn(BagWarning(f"{self.path}: {text}"), stacklevel=4)
+
+
 def iter_raw(
     path: str | os.PathLike[str], topics: Iterable[str] | None = None
-) -> Iterator[tuple[BagConnection, int, bytes]]:
+) -> Iterator[tuple[Connection, int, bytes]]:
     """Yield ``(connection, stamp_ns, serialized bytes)`` in time order.
 
-    A damaged bag yields the messages before the damage.
+    Damaged chunks are skipped with a :class:`BagWarning`; everything readable is yielded.
     """
     path = Path(path)
     wanted = set(topics) if topics else None
     summary = summarize(path)
-    if summary.indexed:
-        with _RosbagsReader(path) as reader:
-            conns = [c for c in reader.connections if wanted is None or c.topic in wanted]
-            if not conns:
-                return
-            for conn, stamp, data in reader.messages(connections=conns):
-                yield summary.connections[conn.id], stamp, data
-        return
-    _, messages = _scan(path, want_messages=True)
-    messages.sort(key=lambda m: m[1])
-    for stored, stamp, data in messages:
-        if wanted is None or stored.topic in wanted:
-            yield stored, stamp, data
+    report = _Reporter(path)
+    report(summary.warnings)
+    connections = dict(summary.connections)
+
+    def useful(chunk: Chunk) -> bool:
+        ids = chunk.counts.keys()
+        return bool(ids) and (
+            wanted is None or any(connections[c].topic in wanted for c in ids if c in connections)
+        )
+
+    pending = sorted((c for c in summary.chunks if useful(c)), key=lambda c: (c.start_ns, c.pos))
+    heap: list[tuple[int, int, Connection, bytes]] = []
+    order = itertools.count()
+    found: list[str] = []
+    with path.open("rb") as stream:
+        index = 0
+        while index < len(pending) or heap:
+            # load every chunk that may hold a message earlier than the earliest one loaded
+            while index < len(pending) and (not heap or pending[index].start_ns <= heap[0][0]):
+                for item in chunk_records(stream, summary.size, pending[index], connections, found):
+                    if isinstance(item, tuple) and (wanted is None or item[0].topic in wanted):
+                        heapq.heappush(heap, (item[1], next(order), item[0], item[2]))
+                report(found)
+                index += 1
+            if heap:
+                stamp, _, conn, data = heapq.heappop(heap)
+                yield conn, stamp, data
 
 
 def read_messages(
     path: str | os.PathLike[str], topics: Iterable[str] | None = None, *, raw: bool = False
 ) -> Iterator[BagMessage]:
     """Iterate a bag's messages as :class:`BagMessage` ``(topic, time, msg, ...)``.
+
+    Messages of damaged chunks, and messages whose bytes do not decode as their type,
+    are skipped with a :class:`BagWarning`.
 
     Args:
         path: The ``.bag`` file (a ``.bag.active`` one is read as far as it goes).
@@ -384,6 +241,24 @@ def read_messages(
     """
     from workbench.bag.types import decode
 
+    skipped: dict[int, int] = {}
     for conn, stamp, data in iter_raw(path, topics):
-        msg = data if raw else decode(conn, data)
+        if raw:
+            yield BagMessage(conn.topic, stamp / 1e9, data, conn.typename, stamp)
+            continue
+        try:
+            msg = decode(conn, data)
+        except Exception as error:  # damaged bytes: each deserializer raises its own types
+            skipped[conn.id] = skipped.get(conn.id, 0) + 1
+            if skipped[conn.id] == 1:
+                reason = " ".join(f"{type(error).__name__}: {error}".split())[:120]
+                warnings.warn(
+                    BagWarning(
+                        f"{path}: skipped a message on {conn.topic} at {stamp / 1e9:.3f} s that "
+                        f"does not decode as {conn.typename} ({reason}); later ones like it "
+                        "are skipped without a warning"
+                    ),
+                    stacklevel=2,
+                )
+            continue
         yield BagMessage(conn.topic, stamp / 1e9, msg, conn.typename, stamp)

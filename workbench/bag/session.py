@@ -9,8 +9,42 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from workbench.bag.errors import BagError
+from workbench.bag.errors import BagError, warnings_as_lines
 from workbench.bag.writer import default_bag_name
+from workbench.errors import MessageError
+
+
+def _playable(summary: Any, topics: Sequence[str] | None) -> set[str]:
+    """The topics of the bag that can be published: types workbench knows, as recorded.
+
+    Others (a type workbench lacks, a definition that differs from workbench's) are
+    left out with a ``[WARN]`` line each, as they cannot be published from this process.
+    """
+    from workbench import msgs
+
+    playable: set[str] = set()
+    refused: dict[str, str] = {}
+    for conn in summary.connections.values():
+        if topics and conn.topic not in topics:
+            continue
+        try:
+            md5 = msgs.md5sum(conn.typename)
+        except MessageError:
+            refused[conn.topic] = f"its type {conn.typename} is not one workbench knows"
+            continue
+        if md5 != conn.md5sum:
+            refused[conn.topic] = (
+                f"it was recorded as {conn.typename} with md5sum {conn.md5sum[:32]}, but "
+                f"workbench's {conn.typename} has {md5}"
+            )
+            continue
+        playable.add(conn.topic)
+    for topic, reason in sorted(refused.items()):
+        if topic not in playable:
+            print(f"[WARN] not playing {topic}: {reason}", file=sys.stderr, flush=True)
+    if refused and not playable:
+        raise BagError("none of the bag's topics can be played", hint="see the warnings above")
+    return playable
 
 
 def output_path(output_name: str | None = None, output_prefix: str | None = None) -> Path:
@@ -167,13 +201,12 @@ def play(
     if delay < 0 or start < 0:
         raise BagError("--delay and --start must not be negative")
     renamed = _remaps(list(remaps))
-    summary = summarize(bag)
+    summary = summarize(bag)  # its damage is reported once, as the playback reads it
+    playable = _playable(summary, topics)
     node = Node("play", anonymous=True)
     publishers: dict[str, Any] = {}
     for conn in summary.connections.values():
-        if topics and conn.topic not in topics:
-            continue
-        if conn.topic not in publishers:
+        if conn.topic in playable and conn.topic not in publishers:
             publishers[conn.topic] = node.create_publisher(
                 renamed.get(conn.topic, conn.topic),
                 get_type(conn.typename),
@@ -213,17 +246,18 @@ def play(
             )
 
     try:
-        report = play_bag(
-            bag,
-            publish,
-            rate=rate,
-            delay=delay,
-            loop=loop,
-            clock=publish_clock if clock_pub is not None else None,
-            start=start,
-            topics=topics,
-            progress=progress,
-        )
+        with warnings_as_lines():
+            report = play_bag(
+                bag,
+                publish,
+                rate=rate,
+                delay=delay,
+                loop=loop,
+                clock=publish_clock if clock_pub is not None else None,
+                start=start,
+                topics=sorted(playable),
+                progress=progress,
+            )
         if not state["delay_done"]:
             print(" done.", flush=True)
         print(f"\nDone. Published {report.published} messages.", flush=True)

@@ -100,7 +100,7 @@ class Bus:
         except (CoreError, ImportError) as error:
             if not quiet:
                 reason = (
-                    f"no workbench core at {uri}"
+                    error.message  # "no workbench core at URI", or why the one there failed
                     if isinstance(error, CoreError)
                     else f"cannot join {uri}: {error}"
                 )

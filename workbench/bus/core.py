@@ -17,6 +17,10 @@ from workbench.bus.errors import CoreError
 from workbench.bus.params import ParameterError, ParameterServer
 from workbench.bus.zconfig import parse_uri, port_open, router_config, zenoh_module
 from workbench.errors import WorkbenchError
+from workbench.limits import MiB, human_bytes
+
+#: Largest parameter request the core reads (a value of at most 16 MiB of text, as JSON).
+MAX_REQUEST_BYTES = 32 * MiB
 
 _LOOPBACK = {"127.0.0.1", "localhost", "::1"}
 
@@ -70,31 +74,49 @@ class Core:
         self._closed = threading.Event()
 
     def _on_param(self, query: Any) -> None:
+        """Answer one parameter request; whatever it holds, the core keeps serving."""
         op = str(query.key_expr).rsplit("/", 1)[-1]
         try:
-            args = json.loads(query.payload.to_string()) if query.payload is not None else {}
-            params = self.params
-            if op == "get":
-                result: Any = params.get(args["name"])
-            elif op == "set":
-                params.set(args["name"], args["value"])
-                result = True
-            elif op == "has":
-                result = params.has(args["name"])
-            elif op == "delete":
-                params.delete(args["name"])
-                result = True
-            elif op == "names":
-                result = params.names()
-            elif op == "search":
-                result = params.search(args["namespace"], args["key"])
-            else:
-                raise ParameterError(f"unknown parameter operation '{op}'")
-            query.reply(query.key_expr, json.dumps(result))
+            reply = self._answer(op, query.payload.to_bytes() if query.payload is not None else b"")
+            query.reply(query.key_expr, reply)
         except ParameterError as error:
             query.reply_err(json.dumps({"kind": "missing", "message": error.one_line()}))
-        except (WorkbenchError, KeyError, ValueError, TypeError) as error:
-            query.reply_err(json.dumps({"kind": "bad", "message": str(error)}))
+        except WorkbenchError as error:
+            query.reply_err(json.dumps({"kind": "bad", "message": error.one_line()}))
+        except (KeyError, ValueError, TypeError, RecursionError, MemoryError) as error:
+            message = f"bad parameter request '{op}': {type(error).__name__}: {error}"
+            query.reply_err(json.dumps({"kind": "bad", "message": message[:500]}))
+
+    def _answer(self, op: str, payload: bytes) -> str:
+        """The JSON reply to parameter operation ``op`` with JSON arguments ``payload``."""
+        if len(payload) > MAX_REQUEST_BYTES:
+            raise ParameterError(
+                f"a parameter request of {human_bytes(len(payload))} is larger than the "
+                f"{human_bytes(MAX_REQUEST_BYTES)} the core accepts",
+                hint="keep large data in files, not in parameters",
+            )
+        args = json.loads(payload) if payload else {}
+        if not isinstance(args, dict):
+            raise ParameterError(f"parameter request '{op}' is not a JSON object")
+        params = self.params
+        if op == "get":
+            return params.get_json(args["name"])
+        result: Any
+        if op == "set":
+            params.set(args["name"], args["value"])
+            result = True
+        elif op == "has":
+            result = params.has(args["name"])
+        elif op == "delete":
+            params.delete(args["name"])
+            result = True
+        elif op == "names":
+            result = params.names()
+        elif op == "search":
+            result = params.search(args["namespace"], args["key"])
+        else:
+            raise ParameterError(f"unknown parameter operation '{op}'")
+        return json.dumps(result)
 
     def nodes(self) -> list[str]:
         """Names of the nodes currently alive on this core."""

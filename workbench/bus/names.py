@@ -6,6 +6,9 @@ name). Remappings (``from:=to``) apply to resolved names. Special arguments
 on a script's command line: ``__name:=``, ``__ns:=``, ``_param:=value``
 (a private parameter, value read as YAML) and ``__log``/``__ip``/``__hostname``/
 ``__master`` (accepted and ignored).
+
+Unlike ROS, a name is at most :data:`MAX_NAME_LENGTH` characters (resolved):
+names travel inside the transport's keys, which must fit one network batch.
 """
 
 from __future__ import annotations
@@ -23,14 +26,27 @@ class InvalidNameError(BusError, ValueError):
     """A topic, service, parameter or node name breaks the ROS naming rules."""
 
 
+#: Longest graph name (a resolved topic, service, node or parameter name), in characters.
+MAX_NAME_LENGTH = 512
+
 _NAME_RE = re.compile(r"^[~/]?([A-Za-z][A-Za-z0-9_]*)?(/[A-Za-z][A-Za-z0-9_]*)*/?$")
 _BASE_RE = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
+
+
+def _check_length(name: str, what: str) -> None:
+    if len(name) > MAX_NAME_LENGTH:
+        raise InvalidNameError(
+            f"{what} '{name[:40]}...' is {len(name):,} characters long, more than the "
+            f"{MAX_NAME_LENGTH} a name may have",
+            hint="use a shorter name",
+        )
 
 
 def check_name(name: str, what: str = "name") -> str:
     """Raise :class:`InvalidNameError` unless ``name`` is a legal graph resource name."""
     if not isinstance(name, str):
         raise InvalidNameError(f"{what} must be a string, not {type(name).__name__}")
+    _check_length(name, what)
     if name in ("", "/", "~"):
         return name
     ok = _NAME_RE.match(name) is not None and "//" not in name
@@ -47,6 +63,8 @@ def check_name(name: str, what: str = "name") -> str:
 
 def check_base_name(name: str, what: str = "node name") -> str:
     """A base name (no namespace): a letter then letters, digits or ``_``."""
+    if isinstance(name, str):
+        _check_length(name, what)
     if not isinstance(name, str) or not _BASE_RE.match(name):
         hint = (
             "namespaces are not allowed here; use namespace= or __ns:="
@@ -103,7 +121,9 @@ def resolve(name: str, namespace: str, node_name: str, what: str = "name") -> st
         resolved = join(node_name, name[1:])
     else:
         resolved = join(namespace, name)
-    return resolved.rstrip("/") or "/"
+    resolved = resolved.rstrip("/") or "/"
+    _check_length(resolved, what)
+    return resolved
 
 
 def anonymous_name(base: str) -> str:
@@ -139,7 +159,7 @@ def parse_command_line(argv: list[str]) -> CommandLine:
     Raises:
         InvalidNameError: A remapping names an invalid graph name.
     """
-    import yaml
+    from workbench.limits import load_yaml
 
     result = CommandLine()
     for arg in argv:
@@ -157,8 +177,10 @@ def parse_command_line(argv: list[str]) -> CommandLine:
             name = key[1:]
             check_name(name, "parameter name")
             try:
-                result.params[name] = yaml.safe_load(value) if value else ""
-            except yaml.YAMLError:
+                result.params[name] = load_yaml(value, f"_{name}", error=BusError) if value else ""
+            except BusError as error:
+                if "is not valid YAML" not in error.message:
+                    raise  # past a bound; text that is not YAML is a string, as in rospy
                 result.params[name] = value
         else:
             check_name(key, "remapping source")

@@ -23,7 +23,6 @@ from __future__ import annotations
 import atexit
 import functools
 import itertools
-import json
 import os
 import sys
 import threading
@@ -38,7 +37,14 @@ from workbench.bus import keys
 from workbench.bus.entities import RawMessage
 from workbench.bus.errors import CoreError, ServiceError, ServiceTimeout
 from workbench.bus.graph import Endpoint
-from workbench.bus.params import ParameterError
+from workbench.bus.remote_params import RemoteParams
+from workbench.bus.wire import (
+    check_size,
+    guarded,
+    install_panic_hooks,
+    is_transport_panic,
+    transport_failed,
+)
 from workbench.bus.zconfig import client_config, parse_uri, port_open, zenoh_module
 from workbench.errors import MessageError
 from workbench.msgs import deserialize, serialize
@@ -110,51 +116,6 @@ def flush_timeout() -> float:
         return FLUSH_TIMEOUT
 
 
-class RemoteParams:
-    """The core's parameter server, with the same methods as :class:`ParameterServer`."""
-
-    def __init__(self, session: Any, uri: str) -> None:
-        self._session = session
-        self._uri = uri
-
-    def _ask(self, op: str, timeout: float = 5.0, **args: Any) -> Any:
-        replies = self._session.get(f"wb/p/{op}", payload=json.dumps(args), timeout=timeout)
-        for reply in replies:
-            if reply.ok is not None:
-                return json.loads(reply.ok.payload.to_string())
-            error = json.loads(reply.err.payload.to_string())
-            if error.get("kind") == "missing":
-                raise ParameterError(error["message"])
-            raise ParameterError(error["message"])
-        raise CoreError(
-            f"the core at {self._uri} did not answer a parameter request",
-            hint="is 'workbench core' still running?",
-        )
-
-    def set(self, name: str, value: Any) -> None:
-        from workbench.bus.params import plain_value
-
-        self._ask("set", name=name, value=plain_value(value, name))
-
-    def get(self, name: str) -> Any:
-        return self._ask("get", name=name)
-
-    def has(self, name: str) -> bool:
-        return bool(self._ask("has", name=name))
-
-    def delete(self, name: str) -> None:
-        self._ask("delete", name=name)
-
-    def names(self) -> list[str]:
-        return list(self._ask("names"))
-
-    def search(self, namespace: str, key: str) -> str | None:
-        return self._ask("search", namespace=namespace, key=key)
-
-    def snapshot(self) -> dict[str, Any]:
-        return self._ask("get", name="/")
-
-
 class ZenohTransport:
     """Connects a :class:`~workbench.bus.Bus` to the core at ``uri``.
 
@@ -171,6 +132,7 @@ class ZenohTransport:
             )
         zenoh = zenoh_module()
         self._z = zenoh
+        install_panic_hooks()
         try:
             self.session = zenoh.open(client_config(uri))
         except zenoh.ZError as error:
@@ -200,7 +162,7 @@ class ZenohTransport:
         if not self._ping_core():
             self.session.close()
             raise CoreError(
-                f"something listens at {uri} but it is not a workbench core",
+                f"something listens at {uri} but does not answer as a workbench core",
                 hint="start 'workbench core' there, or point WORKBENCH_MASTER_URI elsewhere",
             ) from None
         self._graph_sub = self.session.liveliness().declare_subscriber(
@@ -320,7 +282,7 @@ class ZenohTransport:
         non-daemon Python threads that would keep a finished script from exiting.
         """
 
-        def guarded(item: Any) -> None:
+        def logged(item: Any) -> None:
             try:
                 function(item)
             except Exception as error:  # Zenoh's thread must keep serving everyone else
@@ -328,8 +290,12 @@ class ZenohTransport:
                     f"Zenoh callback for {what} raised {type(error).__name__}: {error}\n"
                     f"{traceback.format_exc().rstrip()}"
                 )
+            except BaseException as error:
+                if is_transport_panic(error):
+                    transport_failed(f"the Zenoh callback for {what}", error)
+                raise
 
-        return self._z.handlers.Callback(guarded, indirect=False)
+        return self._z.handlers.Callback(logged, indirect=False)
 
     # --- graph ----------------------------------------------------------------------------
 
@@ -440,16 +406,17 @@ class ZenohTransport:
             express=False,
         )
         declared = [zpub]
-        put = zpub.put
         topic = pub.topic
+        put = guarded(f"publishing on {topic}")(zpub.put)
         mark = self._unflushed.add
+        what = f"a message on {topic}"
 
         if pub.latch:
             send = self._latched_sender(pub, put, declared)
         else:
 
             def send(msg: Any) -> None:
-                put(serialize(msg))
+                put(check_size(serialize(msg), what, MessageError))
                 mark(topic)
 
         with self._lock:
@@ -470,7 +437,7 @@ class ZenohTransport:
         mark = self._unflushed.add
 
         def send(msg: Any) -> None:  # numbered, so that no subscriber gets it twice
-            data = serialize(msg)
+            data = check_size(serialize(msg), f"a message on {topic}", MessageError)
             with latched.lock:
                 latched.seq += 1
                 latched.msg, latched.data = msg, data
@@ -755,7 +722,8 @@ class ZenohTransport:
             try:
                 request = deserialize(query.payload.to_bytes(), server.service_class.Request._type)
                 response = server.handle(request)
-                query.reply(query.key_expr, serialize(response))
+                what = f"the response of service {server.name}"
+                query.reply(query.key_expr, check_size(serialize(response), what, ServiceError))
             except ServiceError as error:
                 query.reply_err(error.message)
             except MessageError as error:
@@ -765,21 +733,27 @@ class ZenohTransport:
                 f"answering a call of service {server.name} failed: "
                 f"{type(error).__name__}: {error}\n{traceback.format_exc().rstrip()}"
             )
+        except BaseException as error:  # the pool would keep it to itself
+            if is_transport_panic(error):
+                transport_failed(f"answering service {server.name}", error)
+            raise
         finally:
             self._finish(query, f"service {server.name}")
 
     def withdraw(self, server: ServiceServer) -> None:
         self._drop(server)
 
+    @guarded("a service call")
     def call(self, client: Client, request: Any, timeout: float | None) -> Any:
         if not self.has_service(client.name):
             raise ServiceError(
                 f"service [{client.name}] unavailable",
                 hint="nobody offers it; 'workbench service list' shows the offered services",
             )
+        what = f"a request to service {client.name}"
         replies = self.session.get(
             keys.service_selector(client.name),
-            payload=serialize(request),
+            payload=check_size(serialize(request), what, ServiceError),
             attachment=f"{client.md5} {client.type}",
             timeout=NO_TIMEOUT if timeout is None else timeout,
         )
@@ -793,6 +767,7 @@ class ZenohTransport:
 
     # --- lifetime -------------------------------------------------------------------------
 
+    @guarded("leaving the core")
     def close(self) -> None:
         """Flush what was published (bounded wait), then leave the core."""
         with self._lock:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 from typing import Any
 
 
@@ -31,15 +32,12 @@ def read_params(path: str) -> dict[str, Any]:
     Raises:
         CoreError: The file cannot be read or does not hold a mapping.
     """
-    import yaml
-
     from workbench.bus.errors import CoreError
+    from workbench.limits import load_yaml_file
 
-    try:
-        with open(path) as stream:
-            params = yaml.safe_load(stream) or {}
-    except (OSError, yaml.YAMLError) as error:
-        raise CoreError(f"cannot read parameters: {error}", path=path) from None
+    if not os.path.exists(path):
+        raise CoreError("cannot read parameters: no such file", path=path)
+    params = load_yaml_file(path, "parameter file", CoreError) or {}
     if not isinstance(params, dict):
         raise CoreError("the parameter file must hold a YAML mapping", path=path)
     return params

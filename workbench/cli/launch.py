@@ -13,7 +13,11 @@ def configure(parser: argparse.ArgumentParser) -> None:
         help="a launch file (.launch/.xml or .yaml), or PACKAGE FILE; then arg:=value pairs",
     )
     parser.add_argument("--uri", help="the core's address (default $WORKBENCH_MASTER_URI)")
-    parser.add_argument("--dry-run", action="store_true", help="print the plan, start nothing")
+    parser.add_argument(
+        "--dry-run",
+        action="store_true",
+        help="print the plan; start, run and read nothing but the launch files",
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -55,6 +59,43 @@ def split_target(target: list[str]) -> tuple[Path, dict[str, str]]:
     raise LaunchError("give a launch file, or a package and a launch file name")
 
 
+def run_command(command: str, launch_file: Path) -> str:
+    """Run a ``<param command=...>``: xacro in this process, anything else as a program.
+
+    ``xacro FILE [name:=value ...]`` (also ``$(find xacro)/xacro.py``) expands FILE with
+    workbench's own xacro, the one ``workbench check``/``show`` use; options such as
+    ``--inorder`` are accepted and ignored (their behaviour is the default).
+
+    Raises:
+        LaunchError: A command that cannot be split, or a xacro command without a file.
+        WorkbenchError: xacro failed (its own one-line message), or the program failed.
+    """
+    import shlex
+
+    from workbench.bus.launch import LaunchError
+    from workbench.bus.launch import run_command as run_program
+    from workbench.bus.launch_values import is_xacro_command
+
+    try:
+        argv = shlex.split(command)
+    except ValueError as error:
+        raise LaunchError(f"param command {command!r} cannot be split ({error})") from None
+    if not is_xacro_command(argv):
+        return run_program(command, launch_file)
+    from workbench.model.sources import expand_xacro
+
+    files = [a for a in argv[1:] if ":=" not in a and not a.startswith("-")]
+    mappings = dict(a.split(":=", 1) for a in argv[1:] if ":=" in a)
+    if len(files) != 1:
+        raise LaunchError(
+            f"param command '{command}' names {len(files)} files; xacro takes one",
+            path=launch_file,
+        )
+    source = Path(files[0])
+    source = source if source.is_absolute() else launch_file.parent / source
+    return expand_xacro(source, mappings)
+
+
 def launch(
     path: Path,
     values: dict[str, str] | None = None,
@@ -75,11 +116,19 @@ def launch(
     """
     from workbench.bus.launch import load_launch
 
-    plan = load_launch(path, dict(values or {}))
+    plan = load_launch(
+        path, dict(values or {}), dry_run=dry_run, command_runner=None if dry_run else run_command
+    )
     if dry_run:
+        from workbench.bus.launch import Deferred
+
         for name, value in sorted(plan.params.items()):
             text = repr(value)
-            print(f"param {name} = {text if len(text) < 60 else text[:57] + '...'}")
+            if len(text) >= 60 and not isinstance(value, Deferred):
+                text = text[:57] + "..."
+            print(f"param {name} = {text}")
+        for namespace, file in plan.rosparam_files:
+            print(f"rosparam {namespace} <- {file} (not read in a dry run)")
         for spec in plan.nodes:
             extra = " ".join([*spec.args, *(f"{a}:={b}" for a, b in spec.remaps.items())])
             print(f"node {spec.full_name}: {spec.pkg}/{spec.type} {extra}".rstrip())

@@ -399,6 +399,7 @@ class _EchoPrinter:
 def _echo_bag(path: str, topic: str, printer: _EchoPrinter, all_topics: bool) -> int:
     """rostopic echo -b: the bag's messages of ``topic`` (or a field of them) in time order."""
     from workbench.bag import read_messages, summarize
+    from workbench.bag.errors import warnings_as_lines
     from workbench.errors import BusError
     from workbench.introspect.echo import field_type, get_field, split_topic_field
 
@@ -421,17 +422,18 @@ def _echo_bag(path: str, topic: str, printer: _EchoPrinter, all_topics: bool) ->
     for conn in summary.connections.values():
         if conn.topic in wanted:
             _learn_type(conn.typename, conn.definition)
-    for record in read_messages(path, wanted):
-        value = record.msg
-        if printer.keep is not None and not printer.keep(value, named[record.topic]):
-            continue
-        ros_type = None
-        if fields:
-            value = get_field(value, fields, topic=named[record.topic])
-            ros_type = field_type(type(record.msg), fields)
-        # a bag gives rostopic no field types: --noarr/--nostr do not reach an echoed field
-        if not printer.show(value, ros_type=ros_type, typed=False, stamp_ns=record.stamp_ns):
-            break
+    with warnings_as_lines():  # damaged chunks: one [WARN] line each
+        for record in read_messages(path, wanted):
+            value = record.msg
+            if printer.keep is not None and not printer.keep(value, named[record.topic]):
+                continue
+            ros_type = None
+            if fields:
+                value = get_field(value, fields, topic=named[record.topic])
+                ros_type = field_type(type(record.msg), fields)
+            # a bag gives rostopic no field types: --noarr/--nostr do not reach an echoed field
+            if not printer.show(value, ros_type=ros_type, typed=False, stamp_ns=record.stamp_ns):
+                break
     return 0
 
 

@@ -11,8 +11,6 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-import yaml
-
 from workbench.errors import MessageError
 
 
@@ -22,16 +20,17 @@ def parse_yaml_args(args: Sequence[str]) -> list[Any]:
     Raises:
         MessageError: an argument is not valid YAML (names it).
     """
+    from workbench.limits import load_yaml
+
     values = []
     for i, text in enumerate(args, start=1):
+        shown = repr(text if len(text) <= 40 else text[:37] + "...")
         try:
-            values.append(yaml.safe_load(text) if text.strip() else "")
-        except yaml.YAMLError as error:
-            problem = getattr(error, "problem", None) or str(error).splitlines()[0]
-            raise MessageError(
-                f"argument {i} ({text!r}) is not valid YAML: {problem}",
-                hint="quote lists and dicts: '[2.0, 0.0, 0.0]'",
-            ) from None
+            value = load_yaml(text, f"argument {i} ({shown})", error=MessageError)
+            values.append(value if text.strip() else "")
+        except MessageError as error:
+            hint = "quote lists and dicts: '[2.0, 0.0, 0.0]'"
+            raise MessageError(error.message, hint=error.hint or hint) from None
     return values
 
 

@@ -9,6 +9,7 @@ from typing import Any
 import yaml
 
 from workbench.errors import BusError
+from workbench.limits import load_yaml, load_yaml_file
 
 
 def _full(name: str) -> str:
@@ -49,10 +50,11 @@ def parse_value(text: str) -> Any:
     Raises:
         BusError: not valid YAML.
     """
-    try:
-        return yaml.safe_load(text)
-    except yaml.YAMLError as error:
-        raise BusError(f"value {text!r} is not valid YAML: {error}") from None
+    return load_yaml(text, f"value {_short(text)}", error=BusError)
+
+
+def _short(text: str) -> str:
+    return repr(text if len(text) <= 40 else text[:37] + "...")
 
 
 def set_text(server: Any, name: str, text: str) -> None:
@@ -93,19 +95,7 @@ def load(server: Any, path: str | os.PathLike[str], namespace: str = "/") -> lis
         BusError: missing file or invalid YAML (with the line).
     """
     path = Path(path)
-    try:
-        text = path.read_text()
-    except OSError as error:
-        raise BusError(f"cannot read parameters: {error.strerror or error}", path=path) from None
-    try:
-        data = yaml.safe_load(text)
-    except yaml.YAMLError as error:
-        mark = getattr(error, "problem_mark", None)
-        raise BusError(
-            f"invalid YAML: {getattr(error, 'problem', error)}",
-            path=path,
-            line=mark.line + 1 if mark is not None else None,
-        ) from None
+    data = load_yaml_file(path, "parameter file", BusError)
     base = _full(namespace).rstrip("/")
     names: list[str] = []
 

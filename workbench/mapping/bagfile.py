@@ -14,9 +14,10 @@ from pathlib import Path
 
 import numpy as np
 
+from workbench.limits import check_regular_file
 from workbench.mapping.errors import LogError
 from workbench.mapping.geometry import compose, wrap_angle
-from workbench.mapping.scan import LaserLog, Scan
+from workbench.mapping.scan import LaserLog, Scan, scan_problem
 from workbench.spatial import yaw_from_quaternion
 
 SCAN_TYPE = "sensor_msgs/msg/LaserScan"
@@ -121,6 +122,7 @@ def read_bag(
         odom_poses: list[list[float]] = []
         mounts: dict[tuple[str, str], np.ndarray] = {}
         raw_scans = []
+        bad_odometry = 0
         tf_edges: dict[str, list[tuple[float, list[float]]]] = {}
         wanted = [
             c
@@ -137,8 +139,12 @@ def read_bag(
                 raw_scans.append(msg)
             elif connection.topic == odom_topic:
                 p = msg.pose.pose
-                odom_times.append(_stamp(msg.header))
-                odom_poses.append([p.position.x, p.position.y, _yaw(p.orientation)])
+                sample = [_stamp(msg.header), p.position.x, p.position.y, _yaw(p.orientation)]
+                if not np.all(np.isfinite(sample)):
+                    bad_odometry += 1
+                    continue
+                odom_times.append(sample[0])
+                odom_poses.append(sample[1:])
                 if base_frame is None:
                     base_frame = _frame(msg.child_frame_id)
             elif connection.msgtype == TF_TYPE:
@@ -146,6 +152,9 @@ def read_bag(
                     parent, child = _frame(tf.header.frame_id), _frame(tf.child_frame_id)
                     tr = tf.transform
                     pose = [tr.translation.x, tr.translation.y, _yaw(tr.rotation)]
+                    if not np.all(np.isfinite([*pose, _stamp(tf.header)])):
+                        bad_odometry += 1
+                        continue
                     mounts[(parent, child)] = np.array(pose)
                     if parent == _frame(odom_frame):
                         tf_edges.setdefault(child, []).append((_stamp(tf.header), pose))
@@ -167,6 +176,10 @@ def read_bag(
         for stamp, pose in sorted(tf_edges.get(base_frame, [])):
             odom_times.append(stamp)
             odom_poses.append(pose)
+    if bad_odometry:
+        warnings.append(
+            f"{path}: skipped {bad_odometry} odometry or /tf pose(s) that are not finite (NaN or inf)"
+        )
     if not raw_scans:
         raise LogError(f"no messages on {scan_topic}", path=path)
     if not odom_times:
@@ -193,19 +206,30 @@ def read_bag(
         else:
             base = np.zeros(3)
         n = len(msg.ranges)
-        angles = msg.angle_min + msg.angle_increment * np.arange(n)
-        scans.append(
-            Scan(
-                stamp=stamp,
-                ranges=np.asarray(msg.ranges, dtype=float),
-                angles=angles,
-                odom=compose(base, mount),
-                max_range=float(msg.range_max) if msg.range_max > 0 else np.inf,
-                min_range=float(max(msg.range_min, 0.0)),
-                source=f"{path}:{scan_topic}[{index}]",
-            )
+        with np.errstate(all="ignore"):
+            angles = msg.angle_min + msg.angle_increment * np.arange(n)
+        scan = Scan(
+            stamp=stamp,
+            ranges=np.asarray(msg.ranges, dtype=float),
+            angles=angles,
+            odom=compose(base, mount),
+            max_range=float(msg.range_max) if msg.range_max > 0 else np.inf,
+            min_range=float(max(msg.range_min, 0.0)),
+            source=f"{path}:{scan_topic}[{index}]",
         )
+        problem = scan_problem(scan)
+        if problem is not None:
+            warnings.append(f"{path}:{scan_topic}[{index}]: skipped scan: {problem}")
+            continue
+        scans.append(scan)
     if not scans:
+        skipped = [w for w in warnings if ": skipped scan: " in w]
+        if skipped:
+            raise LogError(
+                f"no usable scan on {scan_topic}; the first: "
+                + skipped[0].rsplit(": skipped scan: ", 1)[1],
+                path=path,
+            )
         raise LogError(f"no scan on {scan_topic} falls inside the odometry's time span", path=path)
     return LaserLog(path, scans, warnings)
 
@@ -255,6 +279,8 @@ def read_log(path: str | Path, **bag_options: object) -> LaserLog:
 
     path = resolve_log(path)
     try:
+        if path.exists() and not path.is_dir():
+            check_regular_file(path, "log", LogError)  # a FIFO would block, /dev/zero not end
         with open(path, "rb") as stream:
             head = stream.read(13)
     except FileNotFoundError:

@@ -24,16 +24,24 @@ import math
 import zlib
 from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
+from workbench.limits import check_regular_file
 from workbench.mapping.errors import LogError
 from workbench.mapping.geometry import compose
-from workbench.mapping.scan import LaserLog, Scan
+from workbench.mapping.scan import LaserLog, Scan, scan_problem
 
 #: SICK LMS readings at or beyond this mean "no return" in CARMEN logs (m).
 CARMEN_MAX_RANGE = 81.0
 LASER_TAGS = ("FLASER", "RLASER", "ROBOTLASER1")
+#: Most bytes a log may hold once decompressed (a gzip bomb stops here).
+MAX_LOG_BYTES = 512 * 2**20
+#: Most lines a log may hold (2 GiB of newlines would take minutes to count).
+MAX_LOG_LINES = 5_000_000
+#: Longest line read; a longer one is skipped with a warning.
+MAX_LINE_BYTES = 2**20
 
 
 class _BadLine(ValueError):
@@ -112,23 +120,51 @@ def _robotlaser(fields: list[str]) -> Scan:
 
 
 def _lines(path: Path, warnings: list[str]) -> Iterator[tuple[int, str]]:
+    """The log's lines, numbered, within :data:`MAX_LOG_BYTES`, :data:`MAX_LOG_LINES` and
+    :data:`MAX_LINE_BYTES` (a longer line is skipped with a warning)."""
+    check_regular_file(path, "log", LogError)
     try:
         with open(path, "rb") as probe:
             magic = probe.read(2)
-    except FileNotFoundError:
-        raise LogError("log file not found", path=path) from None
     except OSError as exc:
         raise LogError(f"cannot read log: {exc.strerror}", path=path) from None
-    opener = gzip.open if magic == b"\x1f\x8b" else open
-    number = 0
+    number = total = 0
     try:
-        with opener(path, "rt", encoding="utf-8", errors="replace") as stream:
-            for number, line in enumerate(stream, start=1):  # noqa: B007
-                yield number, line
+        with (gzip.open if magic == b"\x1f\x8b" else open)(path, "rb") as stream:
+            while True:
+                raw = stream.readline(MAX_LINE_BYTES + 1)
+                if not raw:
+                    return
+                number += 1
+                total += len(raw)
+                if total > MAX_LOG_BYTES or number > MAX_LOG_LINES:
+                    raise LogError(
+                        f"the log is longer than {MAX_LOG_BYTES // 2**20} MiB or "
+                        f"{MAX_LOG_LINES:,} lines once decompressed",
+                        path=path,
+                        hint="is it a gzip bomb? split a real log into parts",
+                    )
+                if len(raw) > MAX_LINE_BYTES and not raw.endswith(b"\n"):
+                    warnings.append(f"{path}:{number}: skipped a line longer than 1 MiB")
+                    total += _skip_line(stream)
+                    continue
+                yield number, raw.decode("utf-8", errors="replace")
     except (EOFError, zlib.error, gzip.BadGzipFile) as exc:
         if number == 0:
             raise LogError(f"corrupt gzip data ({exc})", path=path) from None
         warnings.append(f"{path}:{number + 1}: log is truncated or corrupt after this line ({exc})")
+    except OSError as exc:
+        raise LogError(f"cannot read log: {exc.strerror or exc}", path=path) from None
+
+
+def _skip_line(stream: Any) -> int:
+    """Read to the end of the current line in bounded pieces; the bytes skipped."""
+    skipped = 0
+    while True:
+        piece = stream.readline(MAX_LINE_BYTES)
+        skipped += len(piece)
+        if not piece or piece.endswith(b"\n") or skipped > MAX_LOG_BYTES:
+            return skipped
 
 
 def read_carmen(path: str | Path) -> LaserLog:
@@ -152,10 +188,12 @@ def read_carmen(path: str | Path) -> LaserLog:
         tag = fields[0]
         try:
             if tag == "PARAM" and len(fields) >= 3:
-                if fields[1] == "robot_frontlaser_offset":
-                    offsets["FLASER"] = float(fields[2])
-                elif fields[1] == "robot_rearlaser_offset":
-                    offsets["RLASER"] = float(fields[2])
+                laser = {"robot_frontlaser_offset": "FLASER", "robot_rearlaser_offset": "RLASER"}
+                if fields[1] in laser:
+                    offset = float(fields[2])
+                    if not math.isfinite(offset):
+                        raise _BadLine(f"offset {fields[2]} is not finite")
+                    offsets[laser[fields[1]]] = offset
                 continue
             if tag in ("FLASER", "RLASER"):
                 scan = _old_laser(fields, tag == "RLASER", offsets[tag])
@@ -165,6 +203,10 @@ def read_carmen(path: str | Path) -> LaserLog:
                 continue
         except (_BadLine, ValueError) as exc:
             warnings.append(f"{path}:{number}: skipped {tag} line: {exc}")
+            continue
+        problem = scan_problem(scan)
+        if problem is not None:
+            warnings.append(f"{path}:{number}: skipped {tag} line: {problem}")
             continue
         scan.source = f"{path}:{number}"
         scans.append(scan)

@@ -29,6 +29,7 @@ from pathlib import Path
 
 import yaml
 
+from workbench.limits import MAX_TEXT_FILE_BYTES, check_regular_file, check_yaml
 from workbench.mapping.errors import MapFileError
 from workbench.mapping.mapfile import MODES, MapMetadata
 
@@ -103,6 +104,10 @@ def _item(sequence: yaml.Node | None, index: int) -> yaml.Node | None:
 
 def _compose(path: Path) -> yaml.Node | None:
     try:
+        if path.exists() and not path.is_dir():  # a FIFO would block, /dev/zero not end
+            check_regular_file(path, "map YAML", MapFileError)
+            if path.stat().st_size > MAX_TEXT_FILE_BYTES:
+                raise MapFileError("the map YAML is larger than 16 MiB", path=path)
         text = path.read_text()
     except FileNotFoundError:
         raise MapFileError(f"Map_server could not open {path}.", hint="no such file") from None
@@ -112,6 +117,11 @@ def _compose(path: Path) -> yaml.Node | None:
         raise MapFileError(f"Map_server could not open {path}.", hint=exc.strerror) from None
     except UnicodeDecodeError:
         raise MapFileError("the map YAML is not text", path=path) from None
+    try:
+        check_yaml(text, "the map YAML", error=MapFileError, path=path)  # depth, aliases
+    except MapFileError as error:
+        if "is not valid YAML" not in error.message:
+            raise  # past a bound; plain syntax errors get map_server's wording below
     try:
         return yaml.compose(text)
     except yaml.YAMLError as exc:
@@ -125,6 +135,8 @@ def _number(doc: yaml.Node | None, key: str, path: Path) -> float:
     value = yaml_double(_lookup(doc, key))
     if value is None:
         raise MapFileError(_missing(key), path=path)
+    if not math.isfinite(value):
+        raise MapFileError(f"the {key} {value} is not finite", path=path)
     return value
 
 
@@ -162,6 +174,11 @@ def read_map_yaml(path: str | os.PathLike[str]) -> MapMetadata:
     origin = tuple(yaml_double(_item(origin_node, index)) for index in range(3))
     if any(value is None for value in origin):
         raise MapFileError(_missing("origin"), path=path, hint="write it as [x, y, yaw]")
+    if not all(math.isfinite(value) for value in origin if value is not None):
+        # map_server takes nan/inf and publishes a map no one can place: refuse it here
+        raise MapFileError(
+            f"the origin {list(origin)} is not finite", path=path, hint="write it as [x, y, yaw]"
+        )
     image = _scalar(_lookup(doc, "image"))
     if image is None:
         raise MapFileError(_missing("image"), path=path)

@@ -22,8 +22,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-import yaml
 
+from workbench.limits import load_yaml_file
 from workbench.mapping.errors import MapFileError
 from workbench.mapping.grid import GridMap
 from workbench.mapping.pgm import read_image, write_pgm
@@ -149,19 +149,9 @@ def read_map_metadata(path: str | Path) -> MapMetadata:
         MapFileError: for a missing file, bad YAML, or a missing or invalid key.
     """
     path = Path(path)
-    try:
-        text = path.read_text()
-    except FileNotFoundError:
-        raise MapFileError("map YAML not found", path=path) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise MapFileError(f"cannot read map YAML: {exc}", path=path) from None
-    try:
-        doc = yaml.safe_load(text)
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        line = mark.line + 1 if mark is not None else None
-        problem = getattr(exc, "problem", None) or "invalid YAML"
-        raise MapFileError(f"invalid YAML: {problem}", path=path, line=line) from None
+    if not path.exists():
+        raise MapFileError("map YAML not found", path=path)
+    doc = load_yaml_file(path, "map YAML", MapFileError)
     if not isinstance(doc, dict):
         raise MapFileError("map YAML is not a mapping of keys to values", path=path)
     resolution = _number(doc, "resolution", path)
@@ -177,8 +167,12 @@ def read_map_metadata(path: str | Path) -> MapMetadata:
         if not isinstance(origin, list | tuple) or len(origin) != 3:
             raise ValueError
         origin_xyz = (float(origin[0]), float(origin[1]), float(origin[2]))
+        if not all(math.isfinite(v) for v in origin_xyz):
+            raise ValueError
     except (TypeError, ValueError):
-        raise MapFileError(f"'origin' must be [x, y, yaw], got {origin!r}", path=path) from None
+        raise MapFileError(
+            f"'origin' must be [x, y, yaw] of finite numbers, got {str(origin)[:60]}", path=path
+        ) from None
     mode = str(doc.get("mode", "trinary"))
     if mode not in MODES:
         raise MapFileError(f"invalid mode {mode!r}", path=path, hint="use trinary, scale or raw")

@@ -7,7 +7,13 @@ from pathlib import Path
 
 import numpy as np
 
+from workbench.limits import MiB, read_bytes_bounded
 from workbench.mapping.errors import MapFileError
+
+#: Most pixels a map image may have (5000 x 5000; gmapping's default map is 4000 x 4000).
+MAX_MAP_PIXELS = 25_000_000
+#: Largest map image file read, bytes.
+MAX_MAP_IMAGE_BYTES = 256 * MiB
 
 _TOKEN = re.compile(rb"(#[^\n]*\n)|(\S+)")
 
@@ -52,6 +58,7 @@ def _read_pnm(path: Path, raw: bytes) -> np.ndarray:
     width, height, maxval = values
     if width <= 0 or height <= 0 or not 0 < maxval < 65536:
         raise MapFileError(f"bad PGM size {width}x{height} or maxval {maxval}", path=path)
+    _check_pixels(width, height, path)
     if magic == b"P5":
         body = raw[position + 1 :]
         dtype = np.dtype(">u2") if maxval > 255 else np.dtype(np.uint8)
@@ -74,6 +81,16 @@ def _read_pnm(path: Path, raw: bytes) -> np.ndarray:
     return np.clip(pixels, 0, 255).astype(np.uint8)
 
 
+def _check_pixels(width: int, height: int, path: Path) -> None:
+    if width * height > MAX_MAP_PIXELS:
+        raise MapFileError(
+            f"the map image is {width} x {height} pixels, more than the {MAX_MAP_PIXELS:,} a "
+            "map may have",
+            path=path,
+            hint="use a coarser resolution, or crop the map",
+        )
+
+
 def read_image(path: Path) -> tuple[np.ndarray, bool]:
     """Read a map image as ``(height, width, channels)`` uint8, rows top-down.
 
@@ -83,20 +100,20 @@ def read_image(path: Path) -> tuple[np.ndarray, bool]:
     Raises:
         MapFileError: for a missing file or one that is not an image.
     """
-    try:
-        raw = path.read_bytes()
-    except FileNotFoundError:
+    if not path.exists():
         raise MapFileError(
             "map image not found", path=path, hint="check the 'image:' entry of the map YAML"
-        ) from None
-    except OSError as exc:
-        raise MapFileError(f"cannot read map image: {exc.strerror}", path=path) from None
+        )
+    raw = read_bytes_bounded(path, "map image", MAX_MAP_IMAGE_BYTES, MapFileError)
     if raw[:2] in (b"P5", b"P2"):
         return _read_pnm(path, raw)[:, :, None], False
+    import io
+
     from PIL import Image, UnidentifiedImageError
 
     try:
-        with Image.open(path) as image:
+        with Image.open(io.BytesIO(raw)) as image:
+            _check_pixels(*image.size, path)  # before the pixels are decompressed
             image.load()
             mode = image.mode
             if mode in ("1", "L", "P", "I", "I;16", "F"):
@@ -109,6 +126,12 @@ def read_image(path: Path) -> tuple[np.ndarray, bool]:
                 image = image.convert("RGB")
             pixels = np.asarray(image, dtype=np.uint8)
             has_alpha = image.mode in ("LA", "RGBA")
+    except Image.DecompressionBombError as error:  # far too large: Pillow refuses to open it
+        raise MapFileError(
+            f"the map image has more than the {MAX_MAP_PIXELS:,} pixels a map may have ({error})",
+            path=path,
+            hint="use a coarser resolution, or crop the map",
+        ) from None
     except (UnidentifiedImageError, OSError, ValueError):
         raise MapFileError(
             "not an image map_server can read (expected a PGM, PNG or similar)", path=path

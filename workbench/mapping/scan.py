@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
+
+#: Most beams one scan may have (a 0.1 degree lidar has 3600).
+MAX_BEAMS = 100_000
 
 
 @dataclass
@@ -50,6 +54,29 @@ class Scan:
         r = self.ranges[ok]
         a = self.angles[ok]
         return np.stack([r * np.cos(a), r * np.sin(a)], axis=1)
+
+
+def scan_problem(scan: Scan) -> str | None:
+    """Why ``scan`` cannot be mapped (a non-finite time, pose or angle ...), or None.
+
+    Non-finite *ranges* are fine (no return); everything that places the beams must be finite.
+    """
+    n = len(scan.ranges)
+    if not math.isfinite(scan.stamp):
+        return f"its time {scan.stamp} is not finite"
+    if np.shape(scan.odom) != (3,) or not np.all(np.isfinite(scan.odom)):
+        return f"its odometry {np.asarray(scan.odom).tolist()} is not finite"
+    if scan.reference is not None and not np.all(np.isfinite(scan.reference)):
+        return "its reference pose is not finite"
+    if n == 0 or n > MAX_BEAMS:
+        return f"it has {n} beams (1 to {MAX_BEAMS:,} make a scan)"
+    if len(scan.angles) != n:
+        return f"it has {n} ranges but {len(scan.angles)} angles"
+    if not np.all(np.isfinite(scan.angles)):
+        return "its beam angles are not finite (angle_min or angle_increment)"
+    if math.isnan(scan.max_range) or not math.isfinite(scan.min_range):
+        return f"its range limits {scan.min_range}..{scan.max_range} are not numbers"
+    return None
 
 
 def free_ends(scan: Scan, max_range: float) -> np.ndarray:

@@ -82,6 +82,8 @@ def parse_static_args(args: Sequence[str]) -> tuple[str, str, tuple[float, ...],
             q = tuple(v / norm for v in qs)
         else:
             raise ValueError(f"{len(values)} arguments")
+        if not all(math.isfinite(v) for v in (x, y, z, *q)):
+            raise ValueError("every number must be finite (no nan or inf)")
     except ValueError as error:
         raise InvalidArgumentException(
             f"static_transform_publisher: bad arguments ({error})",

@@ -106,6 +106,11 @@ class TurtlesimNode:
             return self._spawn(name, x, y, theta)
 
     def _spawn(self, name: str, x: float, y: float, theta: float) -> str:
+        if name:  # its topics and services are named after it: refuse what they cannot be
+            from workbench.bus.names import check_name
+
+            check_name(name, "turtle name")
+            self.node.resolve_name(f"{name}/teleport_absolute", "turtle's service name")
         real = self.sim.spawn(name, x, y, theta)
         self._advertise(real)
         return real
