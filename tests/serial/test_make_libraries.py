@@ -23,6 +23,7 @@ from skipping import skip_or_fail
 from workbench.errors import SerialError
 from workbench.msgs import (
     Message,
+    get_service,
     get_type,
     list_services,
     list_types,
@@ -30,7 +31,7 @@ from workbench.msgs import (
     serialize,
 )
 from workbench.msgs._fields import DTYPES
-from workbench.serial.headers_sources import known_packages, register_package_dir
+from workbench.serial.headers_sources import keyword_field, known_packages, register_package_dir
 from workbench.serial.make_libraries import main, parse_arguments, write_libraries
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "serial"
@@ -52,28 +53,43 @@ def ros_lib(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return out / "ros_lib"
 
 
-def header_classes() -> list[tuple[str, str]]:
-    """(``pkg/Name`` as the table names it, C++ class) for every class the headers define."""
-    services = list_services()
-    inner = {f"{name}{part}" for name in services for part in ("Request", "Response")}
-    found = [
+def exportable_services() -> list[str]:
+    """The services whose parts a header can declare (no field named after a C++ keyword:
+    other tests of the session register such types)."""
+    return [
+        name
+        for name in list_services()
+        if not any(
+            keyword_field(part) for part in (get_service(name).Request, get_service(name).Response)
+        )
+    ]
+
+
+def exportable_types(services: list[str]) -> list[str]:
+    everything = set(list_services())
+    inner = {f"{name}{part}" for name in everything for part in ("Request", "Response")}
+    return [
         name
         for name in list_types()
-        if name not in inner and not name.startswith("builtin_interfaces/")
+        if name not in inner
+        and not name.startswith("builtin_interfaces/")
+        and keyword_field(get_type(name)) is None
     ]
+
+
+def header_classes() -> list[tuple[str, str]]:
+    """(``pkg/Name`` as the table names it, C++ class) for every class the headers define."""
+    services = exportable_services()
+    inner = {f"{name}{part}" for name in services for part in ("Request", "Response")}
+    found = exportable_types(services)
     found += sorted(inner)
     return [(name, name.replace("/", "::")) for name in sorted(found)]
 
 
 def test_every_known_type_has_its_header(ros_lib: Path) -> None:
     written = {str(path.relative_to(ros_lib)) for path in ros_lib.rglob("*.h")}
-    services = set(list_services())
-    messages = {
-        name
-        for name in list_types()
-        if not name.startswith("builtin_interfaces/")
-        and not any(name in (f"{s}Request", f"{s}Response") for s in services)
-    }
+    services = set(exportable_services())
+    messages = set(exportable_types(list(services)))
     assert written == {f"{name}.h" for name in messages | services}
     assert {"std_msgs/String.h", "sensor_msgs/LaserScan.h", "turtlesim/Spawn.h"} <= written
     assert {"lab_serial_msgs/Reading.h", "lab_serial_msgs/Calibrate.h"} <= written
@@ -465,3 +481,19 @@ def test_bad_folders_and_packages(tmp_path: Path) -> None:
     assert register_package_dir(dangling) == "dangling_msgs"
     with pytest.raises(SerialError, match="cannot write the header of dangling_msgs/Holder"):
         write_libraries(tmp_path / "out", ["dangling_msgs"])
+
+
+def test_a_field_named_after_a_cpp_keyword_leaves_its_type_out_with_one_warning(
+    tmp_path: Path, caplog: pytest.LogCaptureFixture
+) -> None:
+    from workbench.msgs import register_message
+
+    register_message("keyword_msgs/Reading", "float64 double\nint32 count\n")
+    register_message("keyword_msgs/Fine", "float64 value\n")
+    with caplog.at_level("WARNING", logger="workbench.serial"):
+        written = write_libraries(tmp_path, ["keyword_msgs"])
+    assert [p.name for p in written] == ["Fine.h"]
+    assert [r.getMessage() for r in caplog.records] == [
+        "keyword_msgs/Reading left out: its field 'double' is a C++ keyword, which a header "
+        "cannot declare"
+    ]

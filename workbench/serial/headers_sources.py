@@ -8,12 +8,16 @@ package folder's ``msg/*.msg`` and ``srv/*.srv`` the way catkin would find them.
 Two kinds of store entries get no header of their own, as in rosserial: the
 request and response messages of a service (they live in the service's header)
 and ``builtin_interfaces`` (``time`` and ``duration`` are ``ros::Time`` and
-``ros::Duration`` of the Arduino library's runtime).
+``ros::Duration`` of the Arduino library's runtime). A type with a field named
+after a C++ keyword (``double``, ``class`` ...) cannot become a C++ class member:
+it is left out with one warning naming the type and the field (rosserial would
+write a header that does not compile).
 """
 
 from __future__ import annotations
 
 import difflib
+import logging
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -33,6 +37,116 @@ from workbench.msgs import (
 
 #: Packages of the store that are ROS 1 primitives rather than messages.
 SKIPPED_PACKAGES = frozenset({"builtin_interfaces"})
+
+#: C++11's keywords and alternative tokens: not usable as member names.
+CPP_KEYWORDS = frozenset(
+    [
+        "alignas",
+        "alignof",
+        "and",
+        "and_eq",
+        "asm",
+        "auto",
+        "bitand",
+        "bitor",
+        "bool",
+        "break",
+        "case",
+        "catch",
+        "char",
+        "char16_t",
+        "char32_t",
+        "class",
+        "compl",
+        "const",
+        "constexpr",
+        "const_cast",
+        "continue",
+        "decltype",
+        "default",
+        "delete",
+        "do",
+        "double",
+        "dynamic_cast",
+        "else",
+        "enum",
+        "explicit",
+        "export",
+        "extern",
+        "false",
+        "float",
+        "for",
+        "friend",
+        "goto",
+        "if",
+        "inline",
+        "int",
+        "long",
+        "mutable",
+        "namespace",
+        "new",
+        "noexcept",
+        "not",
+        "not_eq",
+        "nullptr",
+        "operator",
+        "or",
+        "or_eq",
+        "private",
+        "protected",
+        "public",
+        "register",
+        "reinterpret_cast",
+        "return",
+        "short",
+        "signed",
+        "sizeof",
+        "static",
+        "static_assert",
+        "static_cast",
+        "struct",
+        "switch",
+        "template",
+        "this",
+        "thread_local",
+        "throw",
+        "true",
+        "try",
+        "typedef",
+        "typeid",
+        "typename",
+        "union",
+        "unsigned",
+        "using",
+        "virtual",
+        "void",
+        "volatile",
+        "wchar_t",
+        "while",
+        "xor",
+        "xor_eq",
+    ]
+)
+
+_LOG = logging.getLogger("workbench.serial")
+
+
+def keyword_field(cls: type[Message]) -> str | None:
+    """The first field of ``cls`` named after a C++ keyword, or None."""
+    return next((s.name for s in cls._specs if s.name in CPP_KEYWORDS), None)
+
+
+def _exportable(name: str, parts: Sequence[type[Message]]) -> bool:
+    for part in parts:
+        field = keyword_field(part)
+        if field is not None:
+            _LOG.warning(
+                "%s left out: its field '%s' is a C++ keyword, which a header cannot declare",
+                name,
+                field,
+            )
+            return False
+    return True
 
 
 @dataclass(frozen=True)
@@ -57,10 +171,12 @@ def known_packages(only: Sequence[str] | None = None) -> list[PackageTypes]:
     inside_services = {f"{name}{part}" for name in services for part in ("Request", "Response")}
     by_package: dict[str, tuple[list[str], list[str]]] = {}
     for name in list_types():
-        if name not in inside_services:
+        if name not in inside_services and _exportable(name, [get_type(name)]):
             by_package.setdefault(name.split("/")[0], ([], []))[0].append(name)
     for name in services:
-        by_package.setdefault(name.split("/")[0], ([], []))[1].append(name)
+        service = get_service(name)
+        if _exportable(name, [service.Request, service.Response]):
+            by_package.setdefault(name.split("/")[0], ([], []))[1].append(name)
     for package in SKIPPED_PACKAGES:
         by_package.pop(package, None)
     names = sorted(by_package)
