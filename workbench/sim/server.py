@@ -444,7 +444,7 @@ class SimServer:
             if t < slot.next_update - half_step:
                 continue
             if not slot.plugin.active():
-                slot.next_update = t + (slot.period or self.world.time_step)
+                self._schedule(slot, t)
                 continue
             dt = 0.0 if slot.last_update is None else t - slot.last_update
             slot.efforts.clear()
@@ -455,7 +455,16 @@ class SimServer:
                 self._disable(slot, error, "update")
                 continue
             slot.last_update = t
-            slot.next_update = t + (slot.period or self.world.time_step)
+            self._schedule(slot, t)
+
+    def _schedule(self, slot: _PluginSlot, t: float) -> None:
+        """The next update on the plugin's own grid of periods (so that with steps coarser
+        than its period it still updates at its rate on average); from ``t`` after a gap."""
+        if slot.period <= 0:
+            slot.next_update = t + self.world.time_step
+            return
+        due = slot.next_update + slot.period
+        slot.next_update = due if due > t else t + slot.period
 
     def _disable(self, slot: _PluginSlot, error: BaseException, during: str) -> None:
         where = describe_failure(error, slot.plugin)
