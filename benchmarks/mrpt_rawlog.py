@@ -40,8 +40,12 @@ use), counter-clockwise when ``rightToLeft``. A CARMEN scan's beams (n beams
 and last beam's angles; MRPT's robot frame is then the scan's own sensor
 frame, and odometry increments are those of the sensor poses. (MRPT's
 occupancy-grid insertion, ``COccupancyGridMap2D_insert.cpp``, spaces rays
-``aperture / N`` instead: in rbpf-slam's grids the last beam lands one step,
-1 degree for these scans, short of where its points are matched.)
+``aperture / N`` instead: in rbpf-slam's grids beam ``i`` lands ``i / N``
+of a step clockwise of where its point is matched, up to one step, 1 degree
+for these scans. No aperture serves both; the mismatch turns rbpf-slam's
+heading clockwise keyframe by keyframe: 47 degrees over the corridor log's
+two laps (seed 0), and counter-clockwise instead with the beams written
+clockwise, ``rightToLeft`` false.)
 Readings that are no return (at or beyond the scan's ``max_range``, NaN,
 inf, too short) are flagged invalid and stored as ``maxRange``.
 """
