@@ -271,3 +271,18 @@ def test_missing_programs_are_one_line_naming_the_package(peers, monkeypatch) ->
     notice = peers.missing()
     assert notice is not None and "\n" not in notice
     assert "icp-slam, rbpf-slam" in notice and "apt-get install mrpt-apps" in notice
+
+
+def test_a_log_mrpt_cannot_take_gives_failed_runs(peers, rawlog, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    endless = carmen_scan()
+    endless.max_range = math.inf
+    model = rawlog.MotionModel(0.1, 0.1, 0.1, 0.1)
+    runs = peers.run_peers([endless], np.zeros((1, 3)), model, tmp_path, [0, 1], timeout=1)
+    assert [(r.method, r.seed) for r in runs] == [
+        ("MRPT icp-slam", None),
+        ("MRPT rbpf-slam", 0),
+        ("MRPT rbpf-slam", 1),
+    ]
+    assert all(r.status.startswith("failed: no rawlog: test:1: MRPT needs a finite") for r in runs)
+    row = peers.peer_row(runs[1], np.zeros((1, 3)), (1.0,))
+    assert row["ate"] is None and row["rel_1m"] is None and row["status"] == runs[1].status
