@@ -24,29 +24,24 @@ Layout sources (MRPT tag 2.5.8):
 
 from __future__ import annotations
 
-import importlib
 import math
 import struct
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+from benchmark_modules import benchmark_modules
 
 from workbench.mapping.errors import LogError
 from workbench.mapping.scan import Scan
 
-BENCHMARKS = Path(__file__).resolve().parent.parent / "benchmarks"
 EPOCH_1970 = 116444736 * 10**9
 
 
 @pytest.fixture(scope="module")
 def modules():  # type: ignore[no-untyped-def]
-    sys.path.insert(0, str(BENCHMARKS))
-    try:
-        yield importlib.import_module("mrpt_rawlog"), importlib.import_module("mrpt_peers")
-    finally:
-        sys.path.remove(str(BENCHMARKS))
+    with benchmark_modules("mrpt_rawlog", "mrpt_peers") as modules:
+        yield modules
 
 
 @pytest.fixture

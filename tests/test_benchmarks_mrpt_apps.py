@@ -4,15 +4,14 @@ exactly the points workbench does, icp-slam and rbpf-slam follow a short corrido
 
 from __future__ import annotations
 
-import importlib
 import math
 import shutil
 import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+from benchmark_modules import benchmark_modules
 from skipping import skip_or_fail
 
 from workbench.mapping.corridors import corridor_world
@@ -20,19 +19,14 @@ from workbench.mapping.evaluate import absolute_trajectory_error
 from workbench.mapping.scan import Scan
 from workbench.mapping.simulate import raycast
 
-BENCHMARKS = Path(__file__).resolve().parent.parent / "benchmarks"
-
 
 @pytest.fixture(scope="module")
 def modules():  # type: ignore[no-untyped-def]
     for program in ("rawlog-edit", "icp-slam", "rbpf-slam"):
         if shutil.which(program) is None:
             skip_or_fail(f"MRPT's {program} is not installed (apt-get install mrpt-apps)")
-    sys.path.insert(0, str(BENCHMARKS))
-    try:
-        yield importlib.import_module("mrpt_rawlog"), importlib.import_module("mrpt_peers")
-    finally:
-        sys.path.remove(str(BENCHMARKS))
+    with benchmark_modules("mrpt_rawlog", "mrpt_peers") as modules:
+        yield modules
 
 
 def drive(count: int, beams: int, fov: float, step: float = 0.1) -> list[Scan]:

@@ -3,22 +3,17 @@ per-method summary (median, spread, failed runs, ratios to workbench)."""
 
 from __future__ import annotations
 
-import importlib
 import sys
 from pathlib import Path
 
 import pytest
-
-BENCHMARKS = Path(__file__).resolve().parent.parent / "benchmarks"
+from benchmark_modules import benchmark_modules
 
 
 @pytest.fixture(scope="module")
 def modules():  # type: ignore[no-untyped-def]
-    sys.path.insert(0, str(BENCHMARKS))
-    try:
-        yield importlib.import_module("child_process"), importlib.import_module("slam_tables")
-    finally:
-        sys.path.remove(str(BENCHMARKS))
+    with benchmark_modules("child_process", "slam_tables") as modules:
+        yield modules
 
 
 def test_child_cpu_and_memory_are_its_own(modules, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
