@@ -26,11 +26,14 @@ incremental API's cost per scan at live settings (a 5 Hz 360-beam and a
 
 Peers, on both logs in the same run and with the same scans and odometry:
 MRPT's ``icp-slam`` and ``rbpf-slam`` (Debian's ``mrpt-apps``, MRPT 2.5.8),
-fed a rawlog written by ``mrpt_rawlog`` and run by ``mrpt_peers`` with the
-configs MRPT ships (``icp-slam_demo_classic.ini``, ``gridmapping_intel.ini``;
-only output, display, range caps and rbpf-slam's ``RANDOM_SEED`` changed).
-Their odometry motion model is the Gaussian one covering the log's noise
-level (``MotionModel.from_odometry_noise``; the corridor log uses the middle
+fed a rawlog written by ``mrpt_rawlog`` (which says how MRPT places the
+beams, and how its grids and its matching disagree on that) and run by
+``mrpt_peers`` with the configs MRPT ships (``icp-slam_demo_classic.ini``,
+``gridmapping_intel.ini``; only output, display, logging, range caps and
+rbpf-slam's ``RANDOM_SEED`` changed, its localization thresholds pinned to
+its insertion thresholds as shipped). Their odometry motion model is the
+Gaussian one covering the log's noise level
+(``MotionModel.from_odometry_noise``; the corridor log uses the middle
 level). icp-slam is scored at every scan, rbpf-slam's final most likely path
 at its keyframes (one per 0.5 m or 25 degrees). workbench's SLAM runs as a
 child process too, so that CPU time (user + system of the whole process)
