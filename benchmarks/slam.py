@@ -19,32 +19,54 @@ mean ± std of its translation (m) and rotation (deg).
 The simulated corridor log (``workbench.mapping.corridors``: a ring of long
 2 m corridors driven twice, 360-beam scans with no-return readings,
 odometry with a few percent of scale and heading error) is run next to it
-with its own seeds, its true poses as the reference. For it the table adds
-CPU time and peak memory (``tracemalloc``), and the incremental API's cost
-per scan at live settings (a 5 Hz 360-beam and a 40 Hz 720-beam laser,
-scans matched only every ``linear_update`` m or ``angular_update`` rad).
+with its own seeds, its true poses as the reference; the table adds the
+incremental API's cost per scan at live settings (a 5 Hz 360-beam and a
+40 Hz 720-beam laser, scans matched only every ``linear_update`` m or
+``angular_update`` rad).
 
-MRPT's icp-slam and rbpf-slam are not run: see the project's notes on the
-rawlog format they need.
+Peers, on both logs in the same run and with the same scans and odometry:
+MRPT's ``icp-slam`` and ``rbpf-slam`` (Debian's ``mrpt-apps``, MRPT 2.5.8),
+fed a rawlog written by ``mrpt_rawlog`` (which says how MRPT places the
+beams, and how its grids and its matching disagree on that) and run by
+``mrpt_peers`` with the configs MRPT ships (``icp-slam_demo_classic.ini``,
+``gridmapping_intel.ini``; only output, display, logging, range caps and
+rbpf-slam's ``RANDOM_SEED`` changed, its localization thresholds pinned to
+its insertion thresholds as shipped). Their odometry motion model is the
+Gaussian one covering the log's noise level
+(``MotionModel.from_odometry_noise``; the corridor log uses the middle
+level). icp-slam is scored at every scan, rbpf-slam's final most likely path
+at its keyframes (one per 0.5 m or 25 degrees). workbench's SLAM runs as a
+child process too, so that CPU time (user + system of the whole process)
+and peak memory (maximum resident set size) are measured alike for all
+three; ``CPU s`` of scan-to-scan ICP is in-process. Without ``mrpt-apps``
+the peers are left out with a one-line notice.
 
 Run:  python benchmarks/slam.py [--log PATH] [--quick] [--seeds N] [--corridor-seeds N]
+      [--rbpf-seeds N] [--no-mrpt] [--timeout S]
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import shutil
+import subprocess
 import sys
+import tempfile
 import time
-import tracemalloc
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 from machine import describe  # noqa: E402
+from mrpt_peers import missing, peer_row, run_peers
+from mrpt_rawlog import MotionModel
 from scipy.spatial import cKDTree
+from slam_child import run_workbench
+from slam_tables import label, print_runs, print_summary, summarise
 
 from workbench.errors import WorkbenchError
-from workbench.mapping import LikelihoodField, Slam, SlamConfig, build_map, read_log, run_slam
+from workbench.mapping import LikelihoodField, Slam, SlamConfig, build_map, read_log
 from workbench.mapping.corridors import corridor_log
 from workbench.mapping.evaluate import (
     NOISE_LEVELS,
@@ -56,13 +78,17 @@ from workbench.mapping.evaluate import absolute_trajectory_error as ate
 from workbench.mapping.geometry import between, compose
 from workbench.mapping.matcher import smooth_score
 from workbench.mapping.render import save_png
-from workbench.mapping.scan import densify
+from workbench.mapping.scan import Scan, densify
 
 HERE = Path(__file__).resolve().parent
 DEFAULT_LOG = HERE.parent / "mapping" / "logs" / "intel-corrected.log.gz"
 #: (a1 rad/rad, a2 rad/m, a3 m/m, a4 m/rad) per noise level.
 LEVELS = NOISE_LEVELS
 RELATION_DISTANCES = (1.0, 5.0)
+MEMORY_NOTE = (
+    "CPU s: user + system time of the whole process (workbench and MRPT: child processes), "
+    "in-process for scan-to-scan ICP; peak MB: maximum resident set size"
+)
 
 
 def icp_step(prev: np.ndarray, cur: np.ndarray, guess: np.ndarray, iterations: int = 30):
@@ -112,6 +138,50 @@ def alignment_likelihood(scans, poses: np.ndarray) -> float:
     return float(np.mean(scores))
 
 
+@dataclass
+class Peers:
+    """Settings of the MRPT peers' runs (None in their place: not run).
+
+    Attributes:
+        workdir: Where rawlogs, configs and outputs go.
+        rbpf_seeds: rbpf-slam's ``RANDOM_SEED`` values, one run each per log.
+        timeout: Seconds a program may run before it is stopped and reported.
+    """
+
+    workdir: Path
+    rbpf_seeds: list[int]
+    timeout: float
+
+
+def peer_rows(
+    scans: list[Scan],
+    odom: np.ndarray,
+    reference: np.ndarray,
+    alphas: tuple[float, float, float, float],
+    peers: Peers,
+    name: str,
+    ours: np.ndarray,
+) -> list[dict]:
+    """Rows of MRPT's icp-slam and rbpf-slam on ``scans`` with ``odom``, workbench's ATE at the
+    same scans alongside (``ours``: its poses); rbpf-slam's first map kept as a PNG."""
+    model = MotionModel.from_odometry_noise(alphas)
+    runs = run_peers(scans, odom, model, peers.workdir / name, peers.rbpf_seeds, peers.timeout)
+    rows = []
+    for run in runs:
+        row = peer_row(run, reference, RELATION_DISTANCES)
+        if run.indices is not None:
+            row["workbench_ate_same_scans"] = ate(ours[run.indices], reference[run.indices])
+        rows.append(row)
+    return rows
+
+
+def keep_rbpf_map(peers: Peers, name: str, target: Path) -> None:
+    """Copy rbpf-slam's final map of run ``name`` (first seed) to ``target`` if it was written."""
+    found = sorted((peers.workdir / name).glob("rbpf-slam-*/out/finalMap_*.png"))
+    if found:
+        shutil.copyfile(found[0], target)
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--log", type=Path, default=DEFAULT_LOG, help="CARMEN log or ROS bag")
@@ -121,18 +191,39 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--out", type=Path, default=HERE / "results" / "slam.json")
     parser.add_argument("--corridor-seeds", type=int, default=3, help="corridor log seeds")
     parser.add_argument("--only", choices=("intel", "corridor"), help="run one log only")
+    parser.add_argument("--no-mrpt", action="store_true", help="leave MRPT's programs out")
+    parser.add_argument("--rbpf-seeds", type=int, default=1, help="rbpf-slam runs per log")
+    parser.add_argument(
+        "--timeout",
+        type=float,
+        default=1800.0,
+        help="seconds per SLAM process before it is stopped",
+    )
     args = parser.parse_args(argv)
+    with tempfile.TemporaryDirectory(prefix="slam-benchmark-") as tmp:
+        peers = None
+        if not args.no_mrpt:
+            notice = missing()
+            if notice:
+                print(notice)
+            else:
+                peers = Peers(Path(tmp), list(range(args.rbpf_seeds)), args.timeout)
+        return run(args, Path(tmp), peers)
+
+
+def run(args: argparse.Namespace, tmp: Path, peers: Peers | None) -> int:
+    """The benchmark proper, with its scratch directory ``tmp``."""
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    corridor_out = args.out.with_name("slam_corridor.json")
     if args.only == "corridor":
-        corridor = run_corridor(args.corridor_seeds, args.out)
-        args.out.parent.mkdir(parents=True, exist_ok=True)
-        args.out.with_name("slam_corridor.json").write_text(json.dumps(corridor, indent=1))
+        corridor = run_corridor(args.corridor_seeds, args.out, tmp, args.timeout, peers)
+        corridor_out.write_text(json.dumps(corridor, indent=1))
         return 0
     try:
         log = read_log(args.log)
     except WorkbenchError as error:
         print(f"error: {error}", file=sys.stderr)
         return 1
-    args.out.parent.mkdir(parents=True, exist_ok=True)
     scans = log.scans[:300] if args.quick else log.scans
     reference = log.references()
     if reference is None:
@@ -142,14 +233,14 @@ def main(argv: list[str] | None = None) -> int:
     duration = float(max(s.stamp for s in scans) - min(s.stamp for s in scans))
     seeds = 1 if args.quick else args.seeds
     levels = [name.strip() for name in args.levels.split(",")]
-    info = describe(("numpy", "scipy"))
+    info = describe(("numpy", "scipy"), mrpt=mrpt_version())
     config = SlamConfig()
     rows = []
     print(f"log: {args.log} ({len(scans)} scans, {duration:.1f} s)")
     print(
         f"machine: {info['cpu']}, {info['cores']} cores ({info['usable_cores']} usable), "
         f"load {info['load_average']}; python {info['python']}, numpy {info['numpy']}, "
-        f"scipy {info['scipy']}"
+        f"scipy {info['scipy']}; MRPT {info['mrpt']}"
     )
     for level in levels:
         alphas = LEVELS[level]
@@ -157,46 +248,58 @@ def main(argv: list[str] | None = None) -> int:
             odom = noisy_odometry(reference, alphas, seed)
             for scan, o in zip(scans, odom, strict=True):
                 scan.odom = o
-            wall, cpu = time.perf_counter(), time.process_time()
-            result = run_slam(scans, config)
-            wall, cpu = time.perf_counter() - wall, time.process_time() - cpu
+            ours = run_workbench(scans, config, tmp / f"workbench-{level}-{seed}", args.timeout)
+            icp_cpu = time.process_time()
             icp_wall = time.perf_counter()
             icp = run_icp(scans, odom)
-            icp_wall = time.perf_counter() - icp_wall
-            for method, est, seconds, cpu_s in (
-                ("workbench", result.poses, wall, cpu),
-                ("dead reckoning", odom, 0.0, 0.0),
-                ("scan-to-scan ICP", icp, icp_wall, None),
+            icp_wall, icp_cpu = time.perf_counter() - icp_wall, time.process_time() - icp_cpu
+            new = []
+            for method, est, seconds, cpu_s, peak in (
+                ("workbench", ours.poses, ours.slam_wall_s, ours.cpu_s, ours.peak_mb),
+                ("dead reckoning", odom, 0.0, None, None),
+                ("scan-to-scan ICP", icp, icp_wall, icp_cpu, None),
             ):
-                row = {"level": level, "seed": seed, "method": method, "ate": ate(est, reference)}
+                row = {"method": method, "ate": ate(est, reference)}
                 for d in RELATION_DISTANCES:
                     row[f"rel_{d:g}m"] = relative_error(est, reference, relations(reference, d))
-                row["wall_s"] = seconds
-                row["cpu_s"] = cpu_s
-                row["realtime_factor"] = duration / seconds if seconds else None
+                row.update(wall_s=seconds, cpu_s=cpu_s, peak_mb=peak)
                 if method == "workbench":
-                    row["loop_closures"] = len(result.loop_closures)
+                    row["loop_closures"] = ours.loop_closures
                     row["alignment_likelihood"] = alignment_likelihood(scans, est)
-                    row["cpu_realtime_factor"] = duration / cpu
-                rows.append(row)
-            if seed == 0:
-                grid = build_map(scans, result.poses, 0.05).to_map()
-                save_png(
-                    grid, args.out.with_name(f"slam_{level}.png"), [(result.poses, (220, 30, 30))]
+                    row["slam_cpu_s"] = ours.slam_cpu_s
+                    row["cpu_realtime_factor"] = duration / ours.slam_cpu_s
+                new.append(row)
+            if peers is not None:
+                name = f"intel-{level}-{seed}"
+                new += peer_rows(scans, odom, reference, alphas, peers, name, ours.poses)
+                if seed == 0:
+                    keep_rbpf_map(peers, name, args.out.with_name(f"slam_{level}_rbpf.png"))
+            for row in new:
+                row.update(level=level, seed=seed)
+                wall = row.get("wall_s")
+                row["realtime_factor"] = (
+                    duration / wall if wall and row["ate"] is not None else None
                 )
-            print(f"  {level} seed {seed}: done in {wall:.1f} s wall / {cpu:.1f} s CPU", flush=True)
+            rows += new
+            if seed == 0:
+                grid = build_map(scans, ours.poses, 0.05).to_map()
+                save_png(
+                    grid, args.out.with_name(f"slam_{level}.png"), [(ours.poses, (220, 30, 30))]
+                )
+            took = ", ".join(f"{label(r)} {r['wall_s']:.1f} s" for r in new if r.get("wall_s"))
+            print(f"  {level} seed {seed}: {took} (wall)", flush=True)
     reference_alignment = alignment_likelihood(scans, reference)
     print()
-    print_table(rows)
-    summary = summarise(rows)
+    print_runs(rows)
+    summary = summarise(rows, "level")
     print()
-    print_summary(summary)
+    print_summary(summary, "level")
+    print(MEMORY_NOTE)
     ours = np.mean([r["alignment_likelihood"] for r in rows if r["method"] == "workbench"])
     print(
         f"\nscan-to-scan alignment likelihood (higher is better): reference poses "
         f"{reference_alignment:.3f}, workbench poses {ours:.3f} (mean over runs)"
     )
-    args.out.parent.mkdir(parents=True, exist_ok=True)
     args.out.write_text(
         json.dumps(
             {
@@ -206,6 +309,7 @@ def main(argv: list[str] | None = None) -> int:
                 "noise_levels": {k: LEVELS[k] for k in levels},
                 "noise_parameters": "a1 rad/rad, a2 rad/m, a3 m/m, a4 m/rad",
                 "seeds": list(range(seeds)),
+                "rbpf_seeds": peers.rbpf_seeds if peers else [],
                 "machine": info,
                 "config": config.__dict__,
                 "rows": rows,
@@ -218,21 +322,22 @@ def main(argv: list[str] | None = None) -> int:
     )
     print(f"\nwrote {args.out}")
     if args.only != "intel":
-        corridor = run_corridor(1 if args.quick else args.corridor_seeds, args.out)
-        args.out.with_name("slam_corridor.json").write_text(json.dumps(corridor, indent=1))
-        print(f"wrote {args.out.with_name('slam_corridor.json')}")
+        seeds = 1 if args.quick else args.corridor_seeds
+        corridor = run_corridor(seeds, args.out, tmp, args.timeout, peers)
+        corridor_out.write_text(json.dumps(corridor, indent=1))
+        print(f"wrote {corridor_out}")
     return 0
 
 
-def measured(function, *args, **kwargs):
-    """``function(*args, **kwargs)``, its CPU seconds and its peak traced memory (MB)."""
-    tracemalloc.start()
-    cpu = time.process_time()
-    value = function(*args, **kwargs)
-    cpu = time.process_time() - cpu
-    peak = tracemalloc.get_traced_memory()[1] / 1e6
-    tracemalloc.stop()
-    return value, cpu, peak
+def mrpt_version() -> str:
+    """The installed mrpt-apps package version (dpkg), or ``not installed``."""
+    try:
+        done = subprocess.run(
+            ["dpkg-query", "-W", "-f=${Version}", "mrpt-apps"], capture_output=True, text=True
+        )
+    except OSError:
+        return "not installed"
+    return done.stdout.strip() if done.returncode == 0 and done.stdout.strip() else "not installed"
 
 
 def live_cost(seed: int, beams: int, rate: float, speed: float, config: SlamConfig) -> dict:
@@ -259,52 +364,49 @@ def live_cost(seed: int, beams: int, rate: float, speed: float, config: SlamConf
     }
 
 
-def run_corridor(seeds: int, out: Path) -> dict:
-    """Workbench, dead reckoning and scan-to-scan ICP on the corridor log, per seed."""
+def run_corridor(seeds: int, out: Path, tmp: Path, timeout: float, peers: Peers | None) -> dict:
+    """workbench, dead reckoning, scan-to-scan ICP and the MRPT peers on the corridor log, per seed."""
     print("\ncorridor log (workbench.mapping.corridors), 360 beams, 30 m range, two laps")
     rows = []
     for seed in range(seeds):
         log = corridor_log(seed)
         odom, truth = log.odometry, log.truth
-        result, cpu, peak = measured(run_slam, log.scans)
-        icp, icp_cpu, icp_peak = measured(run_icp, log.scans, odom)
+        ours = run_workbench(log.scans, SlamConfig(), tmp / f"workbench-corridor-{seed}", timeout)
+        icp_cpu = time.process_time()
+        icp = run_icp(log.scans, odom)
+        icp_cpu = time.process_time() - icp_cpu
+        new = []
         for method, est, c, m in (
-            ("workbench", result.poses, cpu, peak),
-            ("dead reckoning", odom, 0.0, 0.0),
-            ("scan-to-scan ICP", icp, icp_cpu, icp_peak),
+            ("workbench", ours.poses, ours.cpu_s, ours.peak_mb),
+            ("dead reckoning", odom, None, None),
+            ("scan-to-scan ICP", icp, icp_cpu, None),
         ):
-            row = {"seed": seed, "method": method, "ate": ate(est, truth), "cpu_s": c, "peak_mb": m}
+            row = {"method": method, "ate": ate(est, truth), "cpu_s": c, "peak_mb": m}
             for d in RELATION_DISTANCES:
                 row[f"rel_{d:g}m"] = relative_error(est, truth, relations(truth, d))
-            rows.append(row)
+            new.append(row)
+        if peers is not None:
+            name = f"corridor-{seed}"
+            new += peer_rows(log.scans, odom, truth, LEVELS["middle"], peers, name, ours.poses)
+            if seed == 0:
+                keep_rbpf_map(peers, name, out.with_name("slam_corridor_rbpf.png"))
+        for row in new:
+            row["seed"] = seed
+        rows += new
         if seed == 0:
-            grid = build_map(log.scans, result.poses, 0.05).to_map()
-            save_png(grid, out.with_name("slam_corridor.png"), [(result.poses, (220, 30, 30))])
+            grid = build_map(log.scans, ours.poses, 0.05).to_map()
+            save_png(grid, out.with_name("slam_corridor.png"), [(ours.poses, (220, 30, 30))])
+        ates = ", ".join(
+            f"{label(r)} {r['ate']:.3f} m" if r["ate"] is not None else f"{label(r)} {r['status']}"
+            for r in new
+        )
         print(
-            f"  seed {seed} ({len(log.scans)} scans, odometry errors {log.errors}): "
-            f"ATE {rows[-3]['ate']:.3f} m, {cpu:.1f} s CPU",
+            f"  seed {seed} ({len(log.scans)} scans, odometry errors {log.errors}): ATE {ates}",
             flush=True,
         )
-    print(
-        f"{'method':18} {'ATE m (median)':>14} {'rel 1m m':>9} {'rel 1m deg':>10} {'CPU s':>7} {'peak MB':>8}"
-    )
-    summary = []
-    for method in ("workbench", "dead reckoning", "scan-to-scan ICP"):
-        sel = [r for r in rows if r["method"] == method]
-        entry = {
-            "method": method,
-            "ate_median": float(np.median([r["ate"] for r in sel])),
-            "ate_max": float(np.max([r["ate"] for r in sel])),
-            "rel_1m_trans": float(np.mean([r["rel_1m"]["trans_mean"] for r in sel])),
-            "rel_1m_rot": float(np.mean([r["rel_1m"]["rot_mean"] for r in sel])),
-            "cpu_s": float(np.mean([r["cpu_s"] for r in sel])),
-            "peak_mb": float(np.max([r["peak_mb"] for r in sel])),
-        }
-        summary.append(entry)
-        print(
-            f"{method:18} {entry['ate_median']:14.3f} {entry['rel_1m_trans']:9.3f} "
-            f"{entry['rel_1m_rot']:10.2f} {entry['cpu_s']:7.1f} {entry['peak_mb']:8.0f}"
-        )
+    summary = summarise(rows)
+    print_summary(summary)
+    print(MEMORY_NOTE)
     live = SlamConfig(linear_update=0.25, angular_update=0.25)
     costs = [live_cost(0, 360, 5.0, 0.5, live), live_cost(0, 720, 40.0, 0.5, live)]
     for c in costs:
@@ -318,66 +420,9 @@ def run_corridor(seeds: int, out: Path) -> dict:
         "rows": rows,
         "summary": summary,
         "live": costs,
-        "machine": describe(("numpy", "scipy")),
+        "rbpf_seeds": peers.rbpf_seeds if peers else [],
+        "machine": describe(("numpy", "scipy"), mrpt=mrpt_version()),
     }
-
-
-def print_table(rows) -> None:
-    head = f"{'level':7} {'seed':>4} {'method':18} {'ATE m':>7} {'rel 1m: trans m':>17} {'rot deg':>13} {'rel 5m: trans m':>17} {'wall s':>7} {'x real time':>11}"
-    print(head)
-    print("-" * len(head))
-    for r in rows:
-        a, b = r["rel_1m"], r["rel_5m"]
-        rtf = f"{r['realtime_factor']:.0f}" if r["realtime_factor"] else "-"
-        print(
-            f"{r['level']:7} {r['seed']:4d} {r['method']:18} {r['ate']:7.3f} "
-            f"{a['trans_mean']:8.3f} ± {a['trans_std']:5.3f} {a['rot_mean']:5.2f} ± {a['rot_std']:5.2f} "
-            f"{b['trans_mean']:8.3f} ± {b['trans_std']:5.3f} {r['wall_s']:7.1f} {rtf:>11}"
-        )
-
-
-def summarise(rows):
-    out = []
-    for level in dict.fromkeys(r["level"] for r in rows):
-        base = {}
-        for method in ("workbench", "dead reckoning", "scan-to-scan ICP"):
-            sel = [r for r in rows if r["level"] == level and r["method"] == method]
-            entry = {
-                "level": level,
-                "method": method,
-                "ate": float(np.mean([r["ate"] for r in sel])),
-                "rel_1m_trans": float(np.mean([r["rel_1m"]["trans_mean"] for r in sel])),
-                "rel_1m_rot": float(np.mean([r["rel_1m"]["rot_mean"] for r in sel])),
-                "rel_5m_trans": float(np.mean([r["rel_5m"]["trans_mean"] for r in sel])),
-            }
-            if method == "workbench":
-                entry["realtime_factor"] = float(np.mean([r["realtime_factor"] for r in sel]))
-                entry["cpu_realtime_factor"] = float(
-                    np.mean([r["cpu_realtime_factor"] for r in sel])
-                )
-                base = entry
-            else:
-                entry["ate_ratio_to_workbench"] = entry["ate"] / base["ate"]
-                entry["rel_1m_ratio_to_workbench"] = entry["rel_1m_trans"] / base["rel_1m_trans"]
-            out.append(entry)
-    return out
-
-
-def print_summary(summary) -> None:
-    print(
-        f"{'level':7} {'method':18} {'ATE m':>7} {'rel 1m m':>9} {'rel 1m deg':>10} {'rel 5m m':>9} {'vs workbench':>13} {'x real time (wall/CPU)':>23}"
-    )
-    for s in summary:
-        ratio = f"{s['ate_ratio_to_workbench']:.1f}x ATE" if "ate_ratio_to_workbench" in s else ""
-        rtf = (
-            f"{s['realtime_factor']:.0f} / {s['cpu_realtime_factor']:.0f}"
-            if "realtime_factor" in s
-            else ""
-        )
-        print(
-            f"{s['level']:7} {s['method']:18} {s['ate']:7.3f} {s['rel_1m_trans']:9.3f} {s['rel_1m_rot']:10.2f} "
-            f"{s['rel_5m_trans']:9.3f} {ratio:>13} {rtf:>23}"
-        )
 
 
 if __name__ == "__main__":
