@@ -22,7 +22,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from process_helpers import Processes, private_core
+from process_helpers import Processes, core_processes
 from skipping import ros_python
 
 from workbench.bag import read_messages, summarize
@@ -66,12 +66,8 @@ while not rospy.is_shutdown():
 @pytest.fixture
 def procs(tmp_path: Path) -> Iterator[Processes]:
     """A private ``workbench core`` on a free loopback port, and children joined to it."""
-    with private_core(tmp_path) as uri:
-        processes = Processes(uri, tmp_path)
-        try:
-            yield processes
-        finally:
-            processes.stop_all()
+    with core_processes(tmp_path) as processes:
+        yield processes
 
 
 def _ros_reads(path: Path) -> dict:
