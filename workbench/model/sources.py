@@ -107,11 +107,17 @@ def available_robots() -> list[str]:
 def expand_xacro(path: Path, mappings: dict[str, str] | None = None) -> str:
     """Run xacro on ``path`` and return the URDF text.
 
+    Expressions, includes, ``load_yaml`` and substitutions run in workbench's
+    sandbox (:mod:`workbench.model.xacro_sandbox`): the file can compute, read files
+    of its own package, and nothing else, within the bounds of
+    :mod:`workbench.model.limits`.
+
     Raises:
-        XacroError: xacro failed; the message carries xacro's own reason.
+        XacroError: xacro failed or the file reached past the sandbox; the message
+            carries the reason and names the (included) file it happened in.
     """
     try:
-        import xacro
+        from workbench.model import xacro_sandbox
     except ImportError as error:  # pragma: no cover - xacro is a dependency
         raise XacroError(
             f"xacro is not installed ({error})", path=path, hint="pip install xacro"
@@ -119,13 +125,27 @@ def expand_xacro(path: Path, mappings: dict[str, str] | None = None) -> str:
     captured = io.StringIO()
     try:
         with contextlib.redirect_stderr(captured), contextlib.redirect_stdout(captured):
-            document = xacro.process_file(str(path), mappings=dict(mappings or {}))
+            return xacro_sandbox.expand(path, mappings)
     except Exception as error:  # xacro raises XacroException, NameError, ExpatError ...
-        reason = " ".join(str(error).split()) or type(error).__name__
-        raise XacroError(
-            f"xacro failed: {reason}", path=path, hint="fix the xacro source and run it again"
-        ) from None
-    return document.toprettyxml(indent="  ")
+        where = getattr(error, "workbench_file", None) or path
+        message, hint = _xacro_reason(error)
+        raise XacroError(f"xacro failed: {message}", path=where, hint=hint) from None
+
+
+def _xacro_reason(error: Exception) -> tuple[str, str]:
+    """One line saying why xacro failed, and what to do."""
+    hint = "fix the xacro source and run it again"
+    cause = getattr(error, "exc", None)
+    if isinstance(error, ModelError):
+        return error.message, error.hint or hint
+    if isinstance(cause, ModelError):
+        suffix = " ".join(str(getattr(error, "suffix", "") or "").split())
+        return " ".join(f"{cause.message} {suffix}".split()), cause.hint or hint
+    if isinstance(error, RecursionError) or isinstance(cause, RecursionError):
+        return "the XML or its macros are nested too deeply (a macro that calls itself?)", hint
+    if isinstance(error, MemoryError) or isinstance(cause, MemoryError):
+        return "out of memory", hint
+    return " ".join(str(error).split()) or type(error).__name__, hint
 
 
 def read_description(path: Path, mappings: dict[str, str] | None = None) -> DescriptionText:
