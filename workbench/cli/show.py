@@ -34,6 +34,8 @@ def parse_positions(items: list[str]) -> dict[str, float]:
     """
     from workbench.errors import ModelError
 
+    import math
+
     values: dict[str, float] = {}
     for item in items:
         name, sep, text = item.partition("=")
@@ -45,6 +47,11 @@ def parse_positions(items: list[str]) -> dict[str, float]:
             raise ModelError(
                 f"--q {item!r} is not JOINT=VALUE", hint="e.g. --q elbow_pitch_joint=0.5"
             ) from None
+        if not math.isfinite(values[name.strip()]):
+            raise ModelError(
+                f"--q {item!r}: {text.strip()} is not a finite number",
+                hint="give the joint position in rad (m for prismatic joints)",
+            )
     return values
 
 

@@ -11,6 +11,7 @@ from typing import Any
 
 from workbench.errors import ModelError
 from workbench.model.description import RobotDescription, describe_robot
+from workbench.model.drake_guard import ModelInputError, check_sdf_file, check_urdf_element
 from workbench.model.description import prepared_urdf as prepared_urdf  # re-exported
 from workbench.model.info import LinkInfo
 from workbench.model.robot import Robot, joint_info_from_plant
@@ -136,6 +137,7 @@ def load_robot(
     description = describe_robot(source, mappings)
     path = description.path
     document = description.document
+    _guard(description)
     if document is not None:
         root_link = description.root_link()
         text = description.prepared_text(model_name)
@@ -162,7 +164,7 @@ def load_robot(
                 instances = parser.AddModelsFromString(text, "urdf")
             else:
                 instances = parser.AddModels(str(path))  # type: ignore[arg-type]
-    except RuntimeError as error:
+    except (RuntimeError, ValueError) as error:  # pydrake raises ValueError for bad vectors
         raise _drake_error(error, path, document) from None
     if not instances:
         raise ModelError("the file defines no model", path=path)
@@ -232,6 +234,23 @@ def load_robot(
         except RuntimeError as error:
             raise _drake_error(error, path, document) from None
     return robot
+
+
+def _guard(description: RobotDescription) -> None:
+    """Check names and numbers Drake would abort or crash on (once per description)."""
+    if description._guarded:
+        return
+    try:
+        if description.document is not None:
+            check_urdf_element(description.document.root, description.path)
+        else:
+            check_sdf_file(description.path)
+    except ModelInputError as error:
+        if not description.expanded:
+            raise
+        # Lines of xacro's output are not lines of the file the user edits.
+        raise ModelInputError(error.message, path=error.path, hint=error.hint) from None
+    description._guarded = True
 
 
 def as_robot(source: str | os.PathLike[str] | RobotDescription | Robot) -> Robot:

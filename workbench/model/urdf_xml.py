@@ -186,7 +186,13 @@ class _Reader:
     def positive(self, element, what: str, values: dict[str, float], zero_ok: bool = False):
         """Sizes Drake accepts (it aborts the process on others): finite and above zero."""
         for key, value in values.items():
-            if not math.isfinite(value) or value < 0 or (value == 0 and not zero_ok):
+            if not math.isfinite(value):
+                self.fail(
+                    f"{what}: {key} {value:g} is not a finite number",
+                    element,
+                    hint="give the shape's real size in metres",
+                )
+            if value < 0 or (value == 0 and not zero_ok):
                 bound = "zero or more" if zero_ok else "more than zero"
                 self.fail(
                     f"{what}: {key} {value:g} must be {bound}",
@@ -216,6 +222,12 @@ class _Reader:
             )
         if any(math.isnan(value) for value in values):
             self.fail(f'{what}: {attribute}="{text}" contains NaN', element)
+        if self.strict and any(math.isinf(value) for value in values):
+            self.fail(
+                f'{what}: {attribute}="{text}" is not a finite number',
+                element,
+                hint="write finite numbers; ROS cannot read inf either",
+            )
         return values
 
     def origin(self, parent, what: str) -> tuple[np.ndarray, np.ndarray]:
@@ -262,7 +274,13 @@ class _Reader:
             if not filename:
                 self.fail(f"{where} has no 'filename' attribute", child)
             scale = self.floats(child, "scale", 3, where, default=(1.0, 1.0, 1.0))
-            if any(not math.isfinite(value) or abs(value) < 1e-8 for value in scale):
+            if not all(math.isfinite(value) for value in scale):
+                self.fail(
+                    f'{where}: scale="{child.get("scale")}" is not a finite number',
+                    child,
+                    hint="scale every axis by a finite, non-zero factor",
+                )
+            if any(abs(value) < 1e-8 for value in scale):
                 self.fail(
                     f'{where}: scale="{child.get("scale")}" has a zero component',
                     child,
