@@ -37,9 +37,11 @@ import yaml
 
 from workbench.errors import PlanningError
 from workbench.paths import planning_dir, urdf_dir
-from workbench.planning.srdf import Srdf, SrdfError, read_srdf, write_srdf
+from workbench.planning.srdf import Srdf, SrdfError, read_srdf
 
 CONFIG_FILE = "planning.yaml"
+#: The first line of every planning.yaml the setup writes (how workbench knows it is its own).
+CONFIG_HEADER = "# Planning configuration written by `workbench setup`; edit freely.\n"
 #: Seconds a joint takes to reach its velocity limit under the default acceleration limit.
 DEFAULT_ACCELERATION_TIME = 0.5
 #: Velocity limit (rad/s or m/s) for joints whose URDF gives none.
@@ -159,24 +161,78 @@ class PlanningConfig:
             data["author"] = dict(self.author)
         return data
 
-    def save(self, out_dir: str | os.PathLike[str] | None = None) -> Path:
+    def save(
+        self, out_dir: str | os.PathLike[str] | None = None, *, create_parents: bool = False
+    ) -> Path:
         """Write ``<robot>.srdf`` and ``planning.yaml`` into ``out_dir`` (default: ``self.path``).
+
+        The folder itself is created when missing, its parents only with
+        ``create_parents`` (workbench's own ``planning/``); files already there are
+        replaced only when ``workbench setup`` wrote them.
+
+        Args:
+            out_dir: The configuration folder.
+            create_parents: Also create missing parent folders.
 
         Returns:
             The directory written.
+
+        Raises:
+            ConfigError: The parent folder is missing, the robot's name cannot name a file,
+                a file there is someone else's, or writing failed.
         """
+        from workbench.model.limits import file_stem_problem
+        from workbench.output_files import check_output, write_output
+
         target = Path(out_dir) if out_dir is not None else self.path
         if target is None:
-            target = config_dir(self.robot_name)
-        target.mkdir(parents=True, exist_ok=True)
+            target, create_parents = config_dir(self.robot_name), True
+        problem = file_stem_problem(self.srdf.name)
+        if problem is not None:
+            raise ConfigError(
+                f"the robot's name '{self.srdf.name[:40]}' cannot name the SRDF file: it {problem}",
+                hint="rename the robot in its description",
+            )
+        check_config_dir(target, create_parents=create_parents)
+        try:
+            target.mkdir(parents=create_parents, exist_ok=True)
+        except OSError as error:
+            raise ConfigError(
+                f"cannot create the configuration folder: {error.strerror}", path=target
+            ) from None
+        srdf_path = check_output(target / f"{self.srdf.name}.srdf", "srdf", error=ConfigError)
+        yaml_path = check_output(target / CONFIG_FILE, "planning-yaml", error=ConfigError)
         self.path = target
-        srdf_path = write_srdf(self.srdf, target / f"{self.srdf.name}.srdf")
+        write_output(srdf_path, self.srdf.to_xml(), error=ConfigError)
         self.srdf.path = srdf_path
         text = yaml.safe_dump(self.to_dict(), sort_keys=False, default_flow_style=None, width=100)
-        (target / CONFIG_FILE).write_text(
-            "# Planning configuration written by `workbench setup`; edit freely.\n" + text
-        )
+        write_output(yaml_path, CONFIG_HEADER + text, error=ConfigError)
         return target
+
+
+def check_config_dir(target: Path, *, create_parents: bool = False) -> None:
+    """Check, before any work, that a configuration may be written into ``target``.
+
+    Raises:
+        ConfigError: Its parent folder is missing (unless ``create_parents``), it is not
+            a folder, or its ``planning.yaml`` was not written by ``workbench setup``.
+    """
+    from workbench.output_files import check_output
+
+    if not create_parents and not target.parent.is_dir():
+        raise ConfigError(
+            f"cannot write the configuration: the folder {target.parent} does not exist",
+            path=target,
+            hint="create it first; workbench creates only the configuration folder itself",
+        )
+    if target.exists() and not target.is_dir():
+        raise ConfigError(
+            "cannot write the configuration: this is not a folder",
+            path=target,
+            hint="give the folder the configuration goes into",
+        )
+    if target.is_dir():
+        check_output(target / CONFIG_FILE, "planning-yaml", error=ConfigError)
 
 
 def config_dir(robot_name: str | os.PathLike[str]) -> Path:
