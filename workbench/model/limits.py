@@ -78,7 +78,7 @@ def check_input_file(
             f"{_size_text(limit)}",
             path=named,
             line=line,
-            hint="is it really a " + what + "? (see 'Limits on input' in the README)",
+            hint=f"is it really a {what}? See 'Limits on input' in the README",
         )
     return path
 
