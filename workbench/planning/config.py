@@ -50,6 +50,8 @@ DEFAULT_PLANNER = "RRTConnect"
 DEFAULT_EDGE_RESOLUTION = 0.01
 DEFAULT_PLANNING_TIME = 1.0
 CONTROLLER_TYPES = ("inverse_dynamics", "pid")
+#: Largest planning.yaml or SRDF read, bytes.
+MAX_CONFIG_BYTES = 16 * 1024 * 1024
 DEFAULT_GAINS = {"kp": 100.0, "ki": 0.0, "kd": 20.0}
 _ROBOT_SUFFIXES = (".urdf", ".xacro", ".urdf.xacro", ".sdf")
 _KEYS = {
@@ -286,10 +288,14 @@ def load_config(source: str | os.PathLike[str]) -> PlanningConfig:
     """
     file = find_config(source)
     try:
-        data = yaml.safe_load(file.read_text())
+        data = yaml.safe_load(_read_text(file))
     except yaml.MarkedYAMLError as exc:
         line = exc.problem_mark.line + 1 if exc.problem_mark else None
         raise ConfigError(f"malformed YAML: {exc.problem}", path=file, line=line) from None
+    except yaml.YAMLError as exc:
+        raise ConfigError(f"malformed YAML: {exc}", path=file) from None
+    except RecursionError:
+        raise ConfigError("the YAML is nested too deeply", path=file) from None
     if not isinstance(data, dict):
         raise ConfigError("expected a mapping of settings", path=file)
     unknown = sorted(set(data) - _KEYS)
@@ -334,6 +340,23 @@ def load_config(source: str | os.PathLike[str]) -> PlanningConfig:
         author=dict(data.get("author") or {}),
         path=base,
     )
+
+
+def _read_text(file: Path) -> str:
+    """A configuration file's text: a regular UTF-8 file of at most a few megabytes."""
+    from workbench.errors import ModelError
+    from workbench.model.limits import check_input_file
+
+    try:
+        return check_input_file(file, "planning configuration", MAX_CONFIG_BYTES).read_text(
+            encoding="utf-8"
+        )
+    except ModelError as error:
+        raise ConfigError(error.message, path=file, hint=error.hint) from None
+    except UnicodeDecodeError:
+        raise ConfigError("the file is not UTF-8 text", path=file) from None
+    except OSError as error:
+        raise ConfigError(f"cannot read the file: {error.strerror}", path=file) from None
 
 
 def default_joint_limits(joints: list[Any]) -> dict[str, dict[str, float]]:
@@ -428,6 +451,6 @@ def _fraction(data: dict[str, Any], key: str, file: Path) -> float:
 
 def _positive(data: dict[str, Any], key: str, default: float, file: Path) -> float:
     value = data.get(key, default)
-    if not isinstance(value, (int, float)) or value <= 0:
+    if not isinstance(value, (int, float)) or not (math.isfinite(value) and value > 0):
         raise ConfigError(f"{key} must be a positive number, got {value!r}", path=file)
     return float(value)
