@@ -49,8 +49,8 @@ KINDS: dict[str, tuple[str, Callable[[bytes], bool]]] = {
 }
 
 
-def _refuse(message: str, path: Path, hint: str, error: type[WorkbenchError]) -> WorkbenchError:
-    return error(message, path=path, hint=hint)
+def _refuse(message: str, hint: str, error: type[WorkbenchError]) -> WorkbenchError:
+    return error(message, hint=hint)
 
 
 def check_output(
@@ -82,44 +82,49 @@ def check_output(
     if not folder.is_dir():
         raise _refuse(
             f"cannot write {label}: the folder {folder} does not exist",
-            path,
             "create it first; workbench does not create folders",
             error,
         )
     try:
         info = path.stat()
     except FileNotFoundError:
-        if not os.access(folder, os.W_OK):
-            raise _refuse(
-                f"cannot write {label}: the folder {folder} is not writable",
-                path,
-                "choose a folder you can write to",
-                error,
-            ) from None
+        _probe(path, label, error)
         return path
     except OSError as problem:
-        raise _refuse(f"cannot write {label}: {problem.strerror}", path, "choose another name", error) from None
+        raise _refuse(f"cannot write {label}: {problem.strerror}", "choose another name", error) from None
     if not stat.S_ISREG(info.st_mode):
         kind_text = "a directory" if stat.S_ISDIR(info.st_mode) else "not a regular file"
-        raise _refuse(
-            f"cannot write {label}: it is {kind_text}",
-            path,
-            f"give a file name for {what}",
-            error,
-        )
+        raise _refuse(f"cannot write {label}: it is {kind_text}", f"give a file name for {what}", error)
     try:
         with path.open("rb") as handle:
             head = handle.read(_HEAD_BYTES)
     except OSError as problem:
-        raise _refuse(f"cannot write {label}: {problem.strerror}", path, "choose another name", error) from None
+        raise _refuse(f"cannot write {label}: {problem.strerror}", "choose another name", error) from None
     if head.strip() and not looks_ours(head):
         raise _refuse(
-            f"will not overwrite {path}: it is not {what}",
-            path,
+            f"will not overwrite {label}: it is not {what}",
             "choose another name, or remove the file first",
             error,
         )
     return path
+
+
+def _probe(path: Path, label: str, error: type[WorkbenchError]) -> None:
+    """Create and remove the new file once, so a folder that takes no files fails now.
+
+    ``os.access`` says yes to root everywhere, also in ``/proc``; only trying tells.
+    """
+    try:
+        handle = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
+    except FileExistsError:
+        return  # appeared meanwhile: checked again when it is written
+    except OSError as problem:
+        raise _refuse(
+            f"cannot write {label}: {problem.strerror}", "choose a folder you can write to", error
+        ) from None
+    os.close(handle)
+    with contextlib.suppress(OSError):
+        os.unlink(path)
 
 
 def write_output(
@@ -155,7 +160,7 @@ def write_output(
         os.replace(temporary, path)
         temporary = None
     except OSError as problem:
-        raise error(f"cannot write {path}: {problem.strerror}", path=path) from None
+        raise error(f"cannot write {path}: {problem.strerror}") from None
     finally:
         if temporary is not None:
             with contextlib.suppress(OSError):

@@ -50,7 +50,7 @@ def parse_positions(items: list[str]) -> dict[str, float]:
         if not math.isfinite(values[name.strip()]):
             raise ModelError(
                 f"--q {item!r}: {text.strip()} is not a finite number",
-                hint="give the joint position in rad (m for prismatic joints)",
+                hint="give the joint position in rad, or in m for a prismatic joint",
             )
     return values
 

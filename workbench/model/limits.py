@@ -67,7 +67,7 @@ def check_input_file(
     if not stat.S_ISREG(info.st_mode):
         kind = "a directory" if stat.S_ISDIR(info.st_mode) else "not a regular file"
         raise ModelError(
-            f"{subject}the {what} is {kind} (a pipe or device would never end)",
+            f"{subject}the {what} is {kind}; a pipe or device would never end",
             path=named,
             line=line,
             hint=f"give a {what} that is a regular file",

@@ -46,8 +46,9 @@ MAX_INT_BITS = 4096
 MAX_SIZE = 1_000_000
 #: Work units one file's expressions may spend (an operation on a value of size n costs n).
 MAX_STEPS = 2_000_000
-#: Seconds one file's expansion may take.
-MAX_SECONDS = 10.0
+#: Seconds one file's expansion may take (a backstop: the bounds above stop hostile files
+#: within a few seconds; xacro itself needs a few for thousands of macro calls).
+MAX_SECONDS = 60.0
 #: Longest expression text, characters.
 MAX_EXPRESSION_LENGTH = 10_000
 #: Widths and precisions allowed in ``%`` formats and f-strings.
@@ -89,8 +90,8 @@ class Meter:
         if self.steps > self.max_steps:
             raise ExpressionLimitError(
                 f"the expressions need more than {self.max_steps:,} operations",
-                hint="a model file may compute, but within bounds (see 'Limits on input' "
-                "in the README)",
+                hint="a model file may compute, but within bounds; see 'Limits on input' "
+                "in the README",
             )
         if self.steps >= self._next_clock:
             self._next_clock = self.steps + 10_000
@@ -101,8 +102,8 @@ class Meter:
         if time.monotonic() - self.started > self.max_seconds:
             raise ExpressionLimitError(
                 f"expanding the file takes more than {self.max_seconds:g} s",
-                hint="a model file may compute, but within bounds (see 'Limits on input' "
-                "in the README)",
+                hint="a model file may compute, but within bounds; see 'Limits on input' "
+                "in the README",
             )
 
 
@@ -176,7 +177,7 @@ def _check_size(value: Any, what: str = "the result") -> Any:
     if size > MAX_SIZE:
         raise ExpressionLimitError(
             f"{what} would hold more than {MAX_SIZE:,} characters or items",
-            hint="a model file may compute, but within bounds (see 'Limits on input' in the README)",
+            hint="a model file may compute, but within bounds; see 'Limits on input' in the README",
         )
     _charge(size)
     return value
@@ -193,7 +194,7 @@ def _check_int(value: Any) -> Any:
         raise ExpressionLimitError(
             f"the result has {value.bit_length():,} bits; a model file may compute integers "
             f"of at most {MAX_INT_BITS} bits",
-            hint="use floats (1e300) for very large numbers",
+            hint="use floats, such as 1e300, for very large numbers",
         )
     return value
 
@@ -203,7 +204,7 @@ def _int_bits_limit(bits: float, what: str) -> None:
         raise ExpressionLimitError(
             f"{what} would have about {bits:,.0f} bits; a model file may compute integers "
             f"of at most {MAX_INT_BITS} bits",
-            hint="use floats (9.0**99) for very large numbers",
+            hint="use floats, such as 9.0**99, for very large numbers",
         )
 
 

@@ -37,6 +37,7 @@ from workbench.model.packages import PackageResolver
 
 _LOCK = threading.RLock()
 _PATCHED = (
+    "replace_node",
     "safe_eval",
     "_global_symbols",
     "eval_extension",
@@ -61,6 +62,36 @@ def package_root(path: Path) -> Path:
         if (directory / "package.xml").is_file():
             return directory
     return start
+
+
+def replace_node(node: Any, by: Any, content_only: bool = False) -> None:
+    """xacro's ``replace_node`` in one splice instead of one ``insertBefore`` per child.
+
+    minidom's ``insertBefore`` looks its reference node up in the parent's child list, so
+    xacro's expansion grew with the square of a parent's children (a 3000-link chain took
+    seconds in that lookup alone). Same result: the nodes of ``by`` (their children, with
+    ``content_only``) take the place of ``node``.
+    """
+    parent = node.parentNode
+    moved: list[Any] = []
+    for doc in [] if by is None else by if isinstance(by, list) else [by]:
+        if content_only:
+            moved.extend(doc.childNodes)
+            del doc.childNodes[:]
+        else:
+            if doc.parentNode is not None and doc is not node:
+                doc.parentNode.removeChild(doc)
+            moved.append(doc)
+    siblings = parent.childNodes
+    index = siblings.index(node)
+    siblings[index : index + 1] = moved
+    for child in moved:
+        child.parentNode = parent
+    for position in range(max(0, index - 1), min(len(siblings), index + len(moved) + 1)):
+        current = siblings[position]
+        current.previousSibling = siblings[position - 1] if position > 0 else None
+        current.nextSibling = siblings[position + 1] if position + 1 < len(siblings) else None
+    node.parentNode = node.previousSibling = node.nextSibling = None
 
 
 def _count_elements(node: Any) -> int:
@@ -103,8 +134,8 @@ class XacroRun:
         if not any(real == root or root in real.parents for root in self.roots):
             raise XacroAccessError(
                 f"{what} {filename} is outside the model's package ({self.roots[0]})",
-                hint="a model may read only files of its own package or of a package on "
-                "WORKBENCH_PACKAGE_PATH ($(find NAME)); see 'Limits on input' in the README",
+                hint="a model may read only files of its own package, or of a package on "
+                "WORKBENCH_PACKAGE_PATH through $(find NAME); see 'Limits on input' in the README",
             )
         check_input_file(real, what, MAX_MODEL_BYTES)
         return str(real)
@@ -262,7 +293,7 @@ class XacroRun:
         if command == "env":
             raise XacroAccessError(
                 f"$({body}) reads the environment, which a model file may not do in workbench",
-                hint=f"pass the value as a xacro argument ({words[0] if words else 'NAME'}:=VALUE)",
+                hint=f"pass the value as a xacro argument, {words[0] if words else 'NAME'}:=VALUE",
             )
         raise xacro.XacroException(f"unknown or malformed substitution $({body})")
 
@@ -302,6 +333,7 @@ class XacroRun:
 
         with _LOCK:
             saved = {name: getattr(xacro, name) for name in _PATCHED}
+            xacro.replace_node = replace_node
             xacro.safe_eval = self.safe_eval
             xacro._global_symbols = self.symbols()
             xacro.eval_extension = self.extension

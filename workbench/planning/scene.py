@@ -151,7 +151,7 @@ class PlanningScene:
         if len(self.objects) >= MAX_SCENE_OBJECTS:
             raise SceneError(
                 f"a scene holds at most {MAX_SCENE_OBJECTS} objects",
-                hint="merge obstacles into larger boxes or meshes (see 'Limits on input' in the README)",
+                hint="merge obstacles into larger boxes or meshes; see 'Limits on input' in the README",
             )
         _validate(obj)
         if obj.name in self.names():
@@ -308,7 +308,7 @@ def load_scene(path: str | os.PathLike[str]) -> PlanningScene:
         raise SceneError(
             f"the scene lists {len(data):,} objects; at most {MAX_SCENE_OBJECTS}",
             path=path,
-            hint="merge obstacles into larger boxes or meshes (see 'Limits on input' in the README)",
+            hint="merge obstacles into larger boxes or meshes; see 'Limits on input' in the README",
         )
     scene = PlanningScene(source=path)
     for item in data:

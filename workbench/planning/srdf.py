@@ -658,7 +658,7 @@ def _parse_value(el: Any, label: Any) -> Any:
             f"joint '{el.get('name')}' has value '{text}', which is not a finite number",
             path=label,
             line=el.sourceline,
-            hint="give the joint position in rad (m for prismatic joints)",
+            hint="give the joint position in rad, or in m for a prismatic joint",
         )
     return numbers[0] if len(numbers) == 1 else numbers
 
