@@ -48,14 +48,32 @@ def prepare(case: dict[str, Any], tmp: Path) -> list[str]:
             handle.truncate(int(size))
     for name in made.get("fifo", []):
         os.mkfifo(tmp / name)
+    for name, links in made.get("sdf_chain", {}).items():
+        (tmp / name).write_text(sdf_chain(int(links)))
     return [fill(str(arg), tmp) for arg in case["args"]]
+
+
+def sdf_chain(links: int) -> str:
+    """An SDF model of ``links`` + 1 links in one chain of fixed joints."""
+    parts = ['<?xml version="1.0"?>', '<sdf version="1.7">', '<model name="chain">']
+    parts += [f'<link name="l{i}"/>' for i in range(links + 1)]
+    parts += [
+        f'<joint name="j{i}" type="fixed"><parent>l{i}</parent><child>l{i + 1}</child></joint>'
+        for i in range(links)
+    ]
+    return "\n".join([*parts, "</model>", "</sdf>", ""])
 
 
 def inputs(case: dict[str, Any]) -> set[str]:
     """The names :func:`prepare` puts into the case's folder."""
     made = case.get("make", {})
     names = {Path(name).name for name in case.get("copy", [])}
-    return names | set(made.get("sparse", {})) | set(made.get("fifo", []))
+    return (
+        names
+        | set(made.get("sparse", {}))
+        | set(made.get("fifo", []))
+        | set(made.get("sdf_chain", {}))
+    )
 
 
 def snapshot(folders: tuple[Path, ...] = WATCHED) -> dict[str, tuple[int, int]]:

@@ -65,7 +65,8 @@ def _cli_case(case_id: str) -> dict:
 
 
 @pytest.mark.parametrize(
-    "case_id", ["xacro_frames", "xacro_power_check", "nan_limit_sdf", "long_name_show", "show_q_nan"]
+    "case_id",
+    ["xacro_frames", "xacro_power_check", "nan_limit_sdf", "long_name_show", "show_q_nan"],
 )
 def test_the_real_command_line(case_id, tmp_path):
     """In a fresh process: no signal (Drake aborted on some of these), no traceback."""

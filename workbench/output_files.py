@@ -41,7 +41,10 @@ KINDS: dict[str, tuple[str, Callable[[bytes], bool]]] = {
     "svg": ("an SVG drawing", lambda head: b"<svg" in head),
     "html-snapshot": ("a Meshcat snapshot", lambda head: b"meshcat" in head.lower()),
     "graphviz": ("a graphviz graph", _starts(b"digraph")),
-    "planning-yaml": ("a planning.yaml written by workbench setup", _contains(b"#", b"workbench setup")),
+    "planning-yaml": (
+        "a planning.yaml written by workbench setup",
+        _contains(b"#", b"workbench setup"),
+    ),
     "srdf": (
         "an SRDF written by workbench setup",
         lambda head: b"Semantic description of the robot for planning" in head,
@@ -91,15 +94,21 @@ def check_output(
         _probe(path, label, error)
         return path
     except OSError as problem:
-        raise _refuse(f"cannot write {label}: {problem.strerror}", "choose another name", error) from None
+        raise _refuse(
+            f"cannot write {label}: {problem.strerror}", "choose another name", error
+        ) from None
     if not stat.S_ISREG(info.st_mode):
         kind_text = "a directory" if stat.S_ISDIR(info.st_mode) else "not a regular file"
-        raise _refuse(f"cannot write {label}: it is {kind_text}", f"give a file name for {what}", error)
+        raise _refuse(
+            f"cannot write {label}: it is {kind_text}", f"give a file name for {what}", error
+        )
     try:
         with path.open("rb") as handle:
             head = handle.read(_HEAD_BYTES)
     except OSError as problem:
-        raise _refuse(f"cannot write {label}: {problem.strerror}", "choose another name", error) from None
+        raise _refuse(
+            f"cannot write {label}: {problem.strerror}", "choose another name", error
+        ) from None
     if head.strip() and not looks_ours(head):
         raise _refuse(
             f"will not overwrite {label}: it is not {what}",

@@ -88,7 +88,10 @@ def test_plan_never_writes_a_config_into_the_folder_of_config(tmp_path, capsys):
             "start: joint 'base_yaw_joint' = 9.0000 is outside",
         ),
         (["--to", "q=0,0,", "--seed", "-1"], "--seed must not be negative"),
-        (["--to", "home", "--json", "/no/such/dir/t.json"], "the folder /no/such/dir does not exist"),
+        (
+            ["--to", "home", "--json", "/no/such/dir/t.json"],
+            "the folder /no/such/dir does not exist",
+        ),
         (["--to", "random", "--planner", "RRTfoo"], "unknown planner 'RRTfoo'"),
         (
             ["--to", "home", "--scene", str(DATA / "bad_type.yaml")],

@@ -180,7 +180,9 @@ def check_options(
         path = check_output(out, OUTPUT_KINDS[option], option=option, error=PlanningError)
         key = path.resolve()
         if key in named:
-            raise PlanningError(f"{named[key]} and {option} both name {out}", hint="give each its own file")
+            raise PlanningError(
+                f"{named[key]} and {option} both name {out}", hint="give each its own file"
+            )
         named[key] = option
     return planner_name(planner) if planner is not None else None
 

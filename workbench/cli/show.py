@@ -32,9 +32,9 @@ def parse_positions(items: list[str]) -> dict[str, float]:
     Raises:
         ModelError: An item is not ``NAME=NUMBER``.
     """
-    from workbench.errors import ModelError
-
     import math
+
+    from workbench.errors import ModelError
 
     values: dict[str, float] = {}
     for item in items:

@@ -16,13 +16,47 @@ from typing import Any
 from lxml import etree
 
 from workbench.errors import ModelError
-from workbench.model.limits import MAX_LINKS, MAX_MODEL_BYTES, check_input_file, name_problem, shown_name
+from workbench.model.limits import (
+    MAX_LINKS,
+    MAX_MODEL_BYTES,
+    check_input_file,
+    name_problem,
+    shown_name,
+)
 
 #: URDF attributes that hold numbers (anything Drake or ROS reads as a number).
 URDF_NUMBERS = frozenset(
-    """xyz rpy size radius length scale value ixx ixy ixz iyy iyz izz lower upper effort
-    velocity damping friction rgba multiplier offset soft_lower_limit soft_upper_limit
-    k_position k_velocity rising falling reference_position""".split()
+    [
+        "xyz",
+        "rpy",
+        "size",
+        "radius",
+        "length",
+        "scale",
+        "value",
+        "ixx",
+        "ixy",
+        "ixz",
+        "iyy",
+        "iyz",
+        "izz",
+        "lower",
+        "upper",
+        "effort",
+        "velocity",
+        "damping",
+        "friction",
+        "rgba",
+        "multiplier",
+        "offset",
+        "soft_lower_limit",
+        "soft_upper_limit",
+        "k_position",
+        "k_velocity",
+        "rising",
+        "falling",
+        "reference_position",
+    ]
 )
 #: URDF elements whose ``name`` is a name Drake keeps.
 URDF_NAMED = ("robot", "link", "joint", "material", "visual", "collision", "transmission")
@@ -30,9 +64,34 @@ URDF_NAMED = ("robot", "link", "joint", "material", "visual", "collision", "tran
 SDF_NAMED = ("model", "link", "joint", "visual", "collision", "frame", "world", "include")
 #: SDF elements whose text is numbers.
 SDF_NUMBERS = frozenset(
-    """pose xyz size radius length scale lower upper effort velocity mass ixx ixy ixz iyy iyz
-    izz damping friction spring_reference spring_stiffness stiffness dissipation mu mu2
-    radii""".split()
+    [
+        "pose",
+        "xyz",
+        "size",
+        "radius",
+        "length",
+        "scale",
+        "lower",
+        "upper",
+        "effort",
+        "velocity",
+        "mass",
+        "ixx",
+        "ixy",
+        "ixz",
+        "iyy",
+        "iyz",
+        "izz",
+        "damping",
+        "friction",
+        "spring_reference",
+        "spring_stiffness",
+        "stiffness",
+        "dissipation",
+        "mu",
+        "mu2",
+        "radii",
+    ]
 )
 #: SDF shapes and the sizes that must be above zero (sphere radius may be zero).
 SDF_SIZES = {"box": ("size",), "cylinder": ("radius", "length"), "capsule": ("radius", "length")}

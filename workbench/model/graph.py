@@ -128,7 +128,9 @@ def render_source(source: str, fmt: str, gv_path: Path | None = None) -> bytes:
         )
     except subprocess.TimeoutExpired:
         raise ModelError(
-            f"graphviz dot took more than {DOT_SECONDS} s", path=gv_path, hint="draw a smaller model"
+            f"graphviz dot took more than {DOT_SECONDS} s",
+            path=gv_path,
+            hint="draw a smaller model",
         ) from None
     if result.returncode != 0:
         raise dot_failure(result.stderr.decode(errors="replace"), source, gv_path)

@@ -63,7 +63,9 @@ def check_input_file(
     try:
         info = path.stat()
     except OSError as error:
-        raise ModelError(f"{subject}cannot read the {what}: {error.strerror}", path=named, line=line) from None
+        raise ModelError(
+            f"{subject}cannot read the {what}: {error.strerror}", path=named, line=line
+        ) from None
     if not stat.S_ISREG(info.st_mode):
         kind = "a directory" if stat.S_ISDIR(info.st_mode) else "not a regular file"
         raise ModelError(

@@ -11,8 +11,8 @@ from typing import Any
 
 from workbench.errors import ModelError
 from workbench.model.description import RobotDescription, describe_robot
-from workbench.model.drake_guard import ModelInputError, check_sdf_file, check_urdf_element
 from workbench.model.description import prepared_urdf as prepared_urdf  # re-exported
+from workbench.model.drake_guard import ModelInputError, check_sdf_file, check_urdf_element
 from workbench.model.info import LinkInfo
 from workbench.model.robot import Robot, joint_info_from_plant
 from workbench.model.urdf_xml import UrdfDocument

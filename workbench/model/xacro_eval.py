@@ -132,6 +132,8 @@ def _charge(units: int = 1) -> None:
 
 _SCALARS = (int, float, complex, bool, type(None))
 _DATA = (str, bytes, list, tuple, dict, set, frozenset, range, *_SCALARS)
+_COLLECTIONS = (list, tuple, set, frozenset, types.MappingProxyType)
+_COLLECTIONS += (type({}.keys()), type({}.values()), type({}.items()))
 
 
 def weight(value: Any, cap: int = MAX_SIZE) -> int:
@@ -158,13 +160,7 @@ def weight(value: Any, cap: int = MAX_SIZE) -> int:
             parent = getattr(item, "parent", None)  # a xacro namespace prints its parents too
             if isinstance(parent, dict) and parent is not item:
                 stack.append(parent)
-        elif isinstance(item, list | tuple | set | frozenset):
-            total += 1
-            stack.extend(item)
-        elif isinstance(item, types.MappingProxyType | type({}.keys()) | type({}.values())):
-            total += 1
-            stack.extend(item)
-        elif isinstance(item, type({}.items())):
+        elif isinstance(item, _COLLECTIONS):
             total += 1
             stack.extend(item)
         else:
@@ -249,7 +245,7 @@ def binary(name: str, left: Any, right: Any) -> Any:
     """``left <op> right`` with the work charged and the result bounded."""
     _charge(1)
     if name == "Pow" and _is_int(left) and _is_int(right) and right > 0 and abs(left) > 1:
-        _int_bits_limit(abs(left).bit_length() * right, "the power")
+        _int_bits_limit(right * math.log2(abs(left)), "the power")
     elif name == "LShift" and _is_int(left) and _is_int(right) and left != 0 and right > 0:
         _int_bits_limit(left.bit_length() + right, "the shift")
     elif name == "Mult":
@@ -283,20 +279,73 @@ def binary(name: str, left: Any, right: Any) -> Any:
 # --- attributes and methods -------------------------------------------------------------
 
 _STR_METHODS = frozenset(
-    """capitalize casefold count endswith find index isalnum isalpha isdecimal isdigit
-    islower isnumeric isspace istitle isupper join lower lstrip partition removeprefix
-    removesuffix replace rfind rindex rpartition rsplit rstrip split splitlines startswith
-    strip swapcase title upper center ljust rjust zfill expandtabs""".split()
+    [
+        "capitalize",
+        "casefold",
+        "count",
+        "endswith",
+        "find",
+        "index",
+        "isalnum",
+        "isalpha",
+        "isdecimal",
+        "isdigit",
+        "islower",
+        "isnumeric",
+        "isspace",
+        "istitle",
+        "isupper",
+        "join",
+        "lower",
+        "lstrip",
+        "partition",
+        "removeprefix",
+        "removesuffix",
+        "replace",
+        "rfind",
+        "rindex",
+        "rpartition",
+        "rsplit",
+        "rstrip",
+        "split",
+        "splitlines",
+        "startswith",
+        "strip",
+        "swapcase",
+        "title",
+        "upper",
+        "center",
+        "ljust",
+        "rjust",
+        "zfill",
+        "expandtabs",
+    ]
 )
 _LIST_METHODS = frozenset({"count", "index"})
 _DICT_METHODS = frozenset({"keys", "values", "items", "get", "copy"})
 _SET_METHODS = frozenset(
-    """union intersection difference symmetric_difference issubset issuperset isdisjoint
-    copy""".split()
+    [
+        "union",
+        "intersection",
+        "difference",
+        "symmetric_difference",
+        "issubset",
+        "issuperset",
+        "isdisjoint",
+        "copy",
+    ]
 )
 _NUMBER_ATTRIBUTES = frozenset(
-    """real imag conjugate numerator denominator bit_length is_integer
-    as_integer_ratio""".split()
+    [
+        "real",
+        "imag",
+        "conjugate",
+        "numerator",
+        "denominator",
+        "bit_length",
+        "is_integer",
+        "as_integer_ratio",
+    ]
 )
 _PADDING = frozenset({"center", "ljust", "rjust", "zfill"})
 
@@ -516,9 +565,7 @@ def _validate(tree: ast.AST) -> None:
         identifier = None
         if isinstance(node, ast.Name):
             identifier = node.id
-        elif isinstance(node, ast.arg):
-            identifier = node.arg
-        elif isinstance(node, ast.keyword):
+        elif isinstance(node, ast.arg | ast.keyword):
             identifier = node.arg
         if identifier is not None and identifier.startswith("__"):
             raise ExpressionError(f"the name '{identifier}' is not available in a model file")

@@ -242,7 +242,11 @@ def _number(value: Any, what: str) -> float:
 
 
 def _shown(value: Any) -> str:
-    text = repr(value) if isinstance(value, str | int | float | bool) or value is None else type(value).__name__
+    text = (
+        repr(value)
+        if isinstance(value, str | int | float | bool) or value is None
+        else type(value).__name__
+    )
     return text if len(text) <= 40 else text[:37] + "..."
 
 

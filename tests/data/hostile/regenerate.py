@@ -30,9 +30,15 @@ def main() -> None:
             tmp = Path(folder)
             outcome = run_case(case, tmp)
             fields = expected_line(outcome)
-        updated = {key: value for key, value in case.items() if key not in ("status", "stderr", "stdout")}
+        updated = {
+            key: value for key, value in case.items() if key not in ("status", "stderr", "stdout")
+        }
         for key, value in fields.items():
-            updated[key] = value.replace(str(tmp), "{tmp}").replace(str(CORPUS), "{dir}") if isinstance(value, str) else value
+            updated[key] = (
+                value.replace(str(tmp), "{tmp}").replace(str(CORPUS), "{dir}")
+                if isinstance(value, str)
+                else value
+            )
         cases.append({key: updated[key] for key in KEYS if key in updated})
         print(f"{case['id']}: {fields}", file=sys.stderr)
     text = yaml.safe_dump(
