@@ -14,6 +14,9 @@ from __future__ import annotations
 
 import os
 
+#: Characters that would break an error's single line, and how they are shown instead.
+_ONE_LINE = str.maketrans({"\n": "\\n", "\r": "\\r", "\t": "\\t", "\v": "\\v", "\f": "\\f"})
+
 
 class WorkbenchError(Exception):
     """Base class of every error workbench raises on bad input or bad state.
@@ -42,7 +45,11 @@ class WorkbenchError(Exception):
         super().__init__(self.one_line())
 
     def one_line(self) -> str:
-        """The error as one line: ``path:line: message (hint)``."""
+        """The error as one line: ``path:line: message (hint)``.
+
+        Line breaks and tabs that came in with a name from a file are shown as ``\\n``
+        and ``\\t``, so the error stays one line whatever the input held.
+        """
         where = ""
         if self.path is not None:
             where = self.path if self.line is None else f"{self.path}:{self.line}"
@@ -50,7 +57,7 @@ class WorkbenchError(Exception):
         text = f"{where}{self.message}"
         if self.hint:
             text += f" ({self.hint})"
-        return text
+        return text.translate(_ONE_LINE)
 
 
 class MissingDependencyError(WorkbenchError, ImportError):

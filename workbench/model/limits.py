@@ -94,6 +94,8 @@ def name_problem(name: str) -> str | None:
     """
     if not name.strip():
         return "is empty"
+    if not name.replace("::", "").strip():
+        return "is only Drake's scope separator '::'"
     if len(name) > MAX_NAME_LENGTH:
         return f"has {len(name):,} characters; at most {MAX_NAME_LENGTH}"
     bad = next((c for c in name if ord(c) < 32 or 127 <= ord(c) < 160), None)

@@ -139,13 +139,18 @@ def _xacro_reason(error: Exception) -> tuple[str, str]:
     if isinstance(error, ModelError):
         return error.message, error.hint or hint
     if isinstance(cause, ModelError):
-        suffix = " ".join(str(getattr(error, "suffix", "") or "").split())
+        suffix = _shortened(" ".join(str(getattr(error, "suffix", "") or "").split()))
         return " ".join(f"{cause.message} {suffix}".split()), cause.hint or hint
     if isinstance(error, RecursionError) or isinstance(cause, RecursionError):
         return "the XML or its macros are nested too deeply (a macro that calls itself?)", hint
     if isinstance(error, MemoryError) or isinstance(cause, MemoryError):
         return "out of memory", hint
-    return " ".join(str(error).split()) or type(error).__name__, hint
+    return _shortened(" ".join(str(error).split())) or type(error).__name__, hint
+
+
+def _shortened(text: str, length: int = 400) -> str:
+    """xacro repeats the whole expression in its messages; keep a readable start of it."""
+    return text if len(text) <= length else text[: length - 5] + " ...'"
 
 
 def read_description(path: Path, mappings: dict[str, str] | None = None) -> DescriptionText:

@@ -23,6 +23,7 @@ from workbench import spatial
 from workbench.errors import ModelError
 from workbench.model.findings import Finding
 from workbench.model.info import JointInfo, LinkInfo
+from workbench.model.limits import shown_name
 
 JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
 
@@ -332,7 +333,7 @@ class _Reader:
         name = element.get("name")
         if not name:
             self.fail("<link> has no name", element, hint='add name="..."')
-        what = f"link '{name}'"
+        what = f"link '{shown_name(name, 80)}'"
         link = Link(name, element.sourceline)
         self.link_label = what
         try:
@@ -356,7 +357,7 @@ class _Reader:
         name = element.get("name")
         if not name:
             self.fail("<joint> has no name", element, hint='add name="..."')
-        what = f"joint '{name}'"
+        what = f"joint '{shown_name(name, 80)}'"
         kind = element.get("type")
         if kind not in JOINT_TYPES:
             self.fail(
@@ -530,7 +531,8 @@ def parse_urdf_text(
     try:
         root = _parse_xml(*_lenient_prolog(_keep_attribute_whitespace(data)), parser)
     except etree.XMLSyntaxError as error:
-        message = re.sub(r",? line \d+, column \d+", "", str(error.msg or error)).strip()
+        message = re.sub(r",? line \d+, column \d+", "", str(error.msg or error))
+        message = " ".join(message.split())
         raise UrdfSyntaxError(
             f"not well-formed XML: {message}",
             path=path,
@@ -552,11 +554,11 @@ def parse_urdf_text(
     for element in root.iterchildren("material"):
         material_name = element.get("name") or ""
         texture = element.find("texture")
-        reader.link_label = f"material '{material_name}'"
+        reader.link_label = f"material '{shown_name(material_name, 80)}'"
         try:
             if not material_name:
                 reader.fail("<material> has no name", element, hint='add name="..."')
-            rgba = reader.rgba(element, f"material '{material_name}'")
+            rgba = reader.rgba(element, f"material '{shown_name(material_name, 80)}'")
         except _Dropped:
             if not material_name:
                 continue

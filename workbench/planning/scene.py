@@ -251,8 +251,16 @@ def _shown(value: Any) -> str:
 
 
 def _validate(obj: SceneObject) -> None:
+    from workbench.model.limits import name_problem, shown_name
+
     if not obj.name or not isinstance(obj.name, str):
         raise SceneError("a scene object needs a non-empty 'name'")
+    problem = name_problem(obj.name)
+    if problem is not None:
+        raise SceneError(
+            f"object name '{shown_name(obj.name)}' {problem}",
+            hint="give it a short name of printable characters",
+        )
     if obj.type not in SIZE_FIELDS:
         raise SceneError(
             f"object '{obj.name}' has unknown type '{obj.type}'",
@@ -348,7 +356,7 @@ def _read_text(path: Path) -> str:
 
 def _object_from_dict(item: Any, base_dir: Path) -> SceneObject:
     if not isinstance(item, dict):
-        raise SceneError(f"each object must be a mapping with name and type, got {item!r}")
+        raise SceneError(f"each object must be a mapping with name and type, got {_shown(item)}")
     item = {k: v for k, v in item.items() if k != "__line__"}
     name = item.pop("name", None)
     if not isinstance(name, str) or not name:
