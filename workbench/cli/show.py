@@ -91,7 +91,8 @@ def show(
         port: Meshcat port (default: the first free one from 7000).
 
     Raises:
-        ModelError: A bad size, port or joint name, or an unreadable description.
+        ModelError: A bad size, port or joint name, an unreadable description, or an
+            output that may not be written (a missing folder, someone else's file).
     """
     import tempfile
     from pathlib import Path
@@ -103,6 +104,12 @@ def show(
         raise ModelError(f"--width and --height must be positive, got {width} x {height}")
     if port is not None and not 0 < port < 65536:
         raise ModelError(f"--port must be in 1..65535, got {port}")
+    from workbench.output_files import check_output
+
+    if html:
+        check_output(html, "html-snapshot", option="--html", error=ModelError)
+    if png:
+        check_output(png, "png", option="--png", error=ModelError)
     from workbench.model import load_robot
     from workbench.viz import Viewer
 
