@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import contextlib
 import signal
+import subprocess
+import sys
 import threading
 from collections.abc import Iterator
 from pathlib import Path
@@ -81,6 +83,26 @@ def hang_guard(what: str, seconds: int = HANG_SECONDS) -> Iterator[None]:
     finally:
         signal.alarm(0)
         signal.signal(signal.SIGALRM, previous)
+
+
+def run_workbench(
+    args: list[str], cwd: Path, what: str, env: dict[str, str] | None = None
+) -> subprocess.CompletedProcess:
+    """``python -m workbench ARGS`` in a fresh process; asserts it ended cleanly.
+
+    Cleanly: exit status 0 or 1 (no signal, no guard's 70), no traceback, no guard line.
+    """
+    result = subprocess.run(
+        [sys.executable, "-m", "workbench", *args],
+        cwd=cwd,
+        capture_output=True,
+        text=True,
+        timeout=600,
+        env=env,
+    )
+    assert result.returncode in (0, 1), (what, result.returncode, result.stderr[-1000:])
+    assert "Traceback" not in result.stderr and "internal error" not in result.stderr, what
+    return result
 
 
 def watched() -> tuple[Path, ...]:

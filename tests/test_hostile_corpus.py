@@ -16,6 +16,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from fuzz_helpers import run_workbench
 from hostile_corpus import CASES, CORPUS, WATCHED, fill, inputs, prepare, run_case, snapshot
 
 
@@ -72,14 +73,8 @@ def test_the_real_command_line(case_id, tmp_path):
     """In a fresh process: no signal (Drake aborted on some of these), no traceback."""
     case = _cli_case(case_id)
     args = prepare(case, tmp_path)
-    result = subprocess.run(
-        [sys.executable, "-m", "workbench", *args],
-        cwd=tmp_path,
-        capture_output=True,
-        text=True,
-        timeout=600,
-        env={**_environment(), "WORKBENCH_CACHE_DIR": str(tmp_path / ".cache")},
-    )
+    env = {**_environment(), "WORKBENCH_CACHE_DIR": str(tmp_path / ".cache")}
+    result = run_workbench(args, tmp_path, case_id, env)
     assert result.returncode == case["status"], result.stderr[-2000:]
     assert result.stderr.splitlines() == [fill(case["stderr"], tmp_path)]
     assert sorted(path.name for path in tmp_path.iterdir() if path.name != ".cache") == []

@@ -22,41 +22,26 @@ from workbench.model.limits import (
     check_input_file,
     name_problem,
     shown_name,
+    xml_error_text,
 )
 
+#: Numbers URDF and SDF share: sizes, inertia, joint limits and dynamics.
+_SHARED_NUMBERS: tuple[str, ...] = (
+    "xyz",
+    "size",
+    "radius",
+    "length",
+    "scale",
+    "lower",
+    "upper",
+    "effort",
+)
+_SHARED_NUMBERS += ("velocity", "ixx", "ixy", "ixz", "iyy", "iyz", "izz", "damping", "friction")
 #: URDF attributes that hold numbers (anything Drake or ROS reads as a number).
 URDF_NUMBERS = frozenset(
-    [
-        "xyz",
-        "rpy",
-        "size",
-        "radius",
-        "length",
-        "scale",
-        "value",
-        "ixx",
-        "ixy",
-        "ixz",
-        "iyy",
-        "iyz",
-        "izz",
-        "lower",
-        "upper",
-        "effort",
-        "velocity",
-        "damping",
-        "friction",
-        "rgba",
-        "multiplier",
-        "offset",
-        "soft_lower_limit",
-        "soft_upper_limit",
-        "k_position",
-        "k_velocity",
-        "rising",
-        "falling",
-        "reference_position",
-    ]
+    _SHARED_NUMBERS
+    + ("rpy", "value", "rgba", "multiplier", "offset", "soft_lower_limit", "soft_upper_limit")
+    + ("k_position", "k_velocity", "rising", "falling", "reference_position")
 )
 #: URDF elements whose ``name`` is a name Drake keeps.
 URDF_NAMED = ("robot", "link", "joint", "material", "visual", "collision", "transmission")
@@ -64,34 +49,9 @@ URDF_NAMED = ("robot", "link", "joint", "material", "visual", "collision", "tran
 SDF_NAMED = ("model", "link", "joint", "visual", "collision", "frame", "world", "include")
 #: SDF elements whose text is numbers.
 SDF_NUMBERS = frozenset(
-    [
-        "pose",
-        "xyz",
-        "size",
-        "radius",
-        "length",
-        "scale",
-        "lower",
-        "upper",
-        "effort",
-        "velocity",
-        "mass",
-        "ixx",
-        "ixy",
-        "ixz",
-        "iyy",
-        "iyz",
-        "izz",
-        "damping",
-        "friction",
-        "spring_reference",
-        "spring_stiffness",
-        "stiffness",
-        "dissipation",
-        "mu",
-        "mu2",
-        "radii",
-    ]
+    _SHARED_NUMBERS
+    + ("pose", "mass", "spring_reference", "spring_stiffness", "stiffness", "dissipation")
+    + ("mu", "mu2", "radii")
 )
 #: SDF shapes and the sizes that must be above zero (sphere radius may be zero).
 SDF_SIZES = {"box": ("size",), "cylinder": ("radius", "length"), "capsule": ("radius", "length")}
@@ -121,7 +81,7 @@ def _non_finite(text: str) -> str | None:
 
 def _label(element: Any, kinds: tuple[str, ...]) -> str:
     """``joint 'j' <limit>``: the nearest named element and the path below it."""
-    path = []
+    path: list[str] = []
     node = element
     while node is not None and isinstance(node.tag, str):
         if node.tag in kinds and node.get("name") is not None:
@@ -194,12 +154,15 @@ def check_sdf_file(path: Path) -> None:
         ModelError: The file cannot be read or is not XML.
     """
     check_input_file(path, "model file", MAX_MODEL_BYTES)
-    parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False)
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=True)
     try:
         root = etree.parse(str(path), parser).getroot()
     except etree.XMLSyntaxError as error:
         raise ModelError(
-            f"not well-formed XML: {error.msg}", path=path, line=error.lineno
+            f"not well-formed XML: {xml_error_text(str(error.msg))}",
+            path=path,
+            line=error.lineno,
+            hint="fix the XML syntax at that line",
         ) from None
     _check_names(root, SDF_NAMED, path)
     for element in root.iter():

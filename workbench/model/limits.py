@@ -9,6 +9,7 @@ listed in the README under "Limits on input".
 from __future__ import annotations
 
 import os
+import re
 import stat
 from pathlib import Path
 
@@ -118,3 +119,17 @@ def file_stem_problem(name: str) -> str | None:
     if "/" in name or "\\" in name or name in (".", ".."):
         return "contains a path separator"
     return None
+
+
+_DEPTH = re.compile(r"Excessive depth in document: (\d+).*")
+
+
+def xml_error_text(message: str) -> str:
+    """lxml's complaint about a file as one line, without its position or libxml2's advice.
+
+    ``Excessive depth in document: 2048, use XML_PARSE_HUGE option`` becomes
+    ``elements are nested more than 2048 deep``: an option of libxml2 is no advice
+    for whoever wrote the model.
+    """
+    text = " ".join(re.sub(r",? line \d+, column \d+", "", message).split())
+    return _DEPTH.sub(lambda match: f"elements are nested more than {match.group(1)} deep", text)

@@ -23,7 +23,7 @@ from workbench import spatial
 from workbench.errors import ModelError
 from workbench.model.findings import Finding
 from workbench.model.info import JointInfo, LinkInfo
-from workbench.model.limits import shown_name
+from workbench.model.limits import shown_name, xml_error_text
 
 JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
 
@@ -531,8 +531,7 @@ def parse_urdf_text(
     try:
         root = _parse_xml(*_lenient_prolog(_keep_attribute_whitespace(data)), parser)
     except etree.XMLSyntaxError as error:
-        message = re.sub(r",? line \d+, column \d+", "", str(error.msg or error))
-        message = " ".join(message.split())
+        message = xml_error_text(str(error.msg or error))
         raise UrdfSyntaxError(
             f"not well-formed XML: {message}",
             path=path,

@@ -132,7 +132,7 @@ def _charge(units: int = 1) -> None:
 
 _SCALARS = (int, float, complex, bool, type(None))
 _DATA = (str, bytes, list, tuple, dict, set, frozenset, range, *_SCALARS)
-_COLLECTIONS = (list, tuple, set, frozenset, types.MappingProxyType)
+_COLLECTIONS: tuple[type, ...] = (list, tuple, set, frozenset, types.MappingProxyType)
 _COLLECTIONS += (type({}.keys()), type({}.values()), type({}.items()))
 
 
@@ -162,7 +162,7 @@ def weight(value: Any, cap: int = MAX_SIZE) -> int:
                 stack.append(parent)
         elif isinstance(item, _COLLECTIONS):
             total += 1
-            stack.extend(item)
+            stack.extend(item)  # type: ignore[arg-type]
         else:
             total += 1
     return total
@@ -179,10 +179,9 @@ def _check_size(value: Any, what: str = "the result") -> Any:
     return value
 
 
-def _charge_weight(value: Any) -> int:
+def _charge_weight(value: Any) -> None:
     """Charge what reading ``value`` costs; refuse a value past :data:`MAX_SIZE`."""
     _check_size(value, "a value")
-    return 0
 
 
 def _check_int(value: Any) -> Any:
@@ -621,15 +620,14 @@ class _Rewrite(ast.NodeTransformer):
         node.comparators = [_helper("charged", value) for value in node.comparators]
         return node
 
-    def visit_Starred(self, node: ast.Starred) -> ast.AST:
+    def _charge_value(self, node: ast.Starred | ast.FormattedValue) -> ast.AST:
+        """``*value`` copies it and ``f"{value}"`` prints it: both cost its size."""
         self.generic_visit(node)
         node.value = _helper("charged", node.value)
         return node
 
-    def visit_FormattedValue(self, node: ast.FormattedValue) -> ast.AST:
-        self.generic_visit(node)
-        node.value = _helper("charged", node.value)
-        return node
+    visit_Starred = _charge_value
+    visit_FormattedValue = _charge_value
 
     def visit_Dict(self, node: ast.Dict) -> ast.AST:
         self.generic_visit(node)
@@ -726,15 +724,20 @@ def _small_int_arguments(function: Callable[..., Any], limit: int = 10_000) -> C
     return bounded
 
 
-def _stepwise(function: Callable[[Any, Any], Any], start: int) -> Callable[..., Any]:
-    def folded(*args: Any, **kwargs: Any) -> Any:
-        values = list(args[0]) if function is operator.mul else list(args)
-        total = kwargs.get("start", start)
-        for value in values:
-            total = _check_int(function(total, value))
-        return total
+def _prod(iterable: Any, *, start: Any = 1) -> Any:
+    """``math.prod`` one factor at a time, so a product cannot outgrow :data:`MAX_INT_BITS`."""
+    total = start
+    for value in iterable:
+        total = _check_int(total * value)
+    return total
 
-    return folded
+
+def _lcm(*values: Any) -> Any:
+    """``math.lcm`` one number at a time, bounded like :func:`_prod`."""
+    total = 1
+    for value in values:
+        total = _check_int(math.lcm(total, value))
+    return total
 
 
 def _type(value: Any) -> Any:
@@ -764,7 +767,7 @@ def _issubclass(value: Any, spec: Any) -> bool:
 
 _CONSUMERS = {"list", "tuple", "set", "frozenset", "dict", "min", "max", "any", "all"}
 _CONSUMERS |= {"enumerate", "zip", "map", "filter", "reversed"}
-_PLAIN = ("bool", "float", "int", "complex", "str", "repr", "len", "abs", "divmod")
+_PLAIN: tuple[str, ...] = ("bool", "float", "int", "complex", "str", "repr", "len", "abs", "divmod")
 _PLAIN += ("ord", "hash", "slice", "list", "tuple", "set", "frozenset", "dict", "min", "max")
 _PLAIN += ("any", "all", "enumerate", "zip", "map", "filter", "reversed")
 
@@ -803,8 +806,8 @@ def math_functions() -> dict[str, Any]:
         "factorial": _small_int_arguments(math.factorial, 2000),
         "comb": _small_int_arguments(math.comb),
         "perm": _small_int_arguments(math.perm),
-        "prod": _stepwise(operator.mul, 1),
-        "lcm": _stepwise(lambda a, b: math.lcm(a, b), 1),
+        "prod": _prod,
+        "lcm": _lcm,
     }
     functions: dict[str, Any] = {}
     for name, value in vars(math).items():

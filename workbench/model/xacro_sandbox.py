@@ -214,7 +214,18 @@ class XacroRun:
         python = xacro_eval.python_functions()
         math_functions = xacro_eval.math_functions()
         result: dict[str, Any] = {}
-        direct = ("list", "dict", "map", "len", "str", "float", "int", "bool", "True", "False")
+        direct: tuple[str, ...] = (
+            "list",
+            "dict",
+            "map",
+            "len",
+            "str",
+            "float",
+            "int",
+            "bool",
+            "True",
+            "False",
+        )
         direct += ("min", "max", "round", "sorted", "range")
         for name in direct:
             result[name] = python[name]
