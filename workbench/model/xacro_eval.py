@@ -122,10 +122,8 @@ def metered(meter: Meter) -> Iterator[Meter]:
 
 
 def _charge(units: int = 1) -> None:
-    global _meter
-    if _meter is None:
-        _meter = Meter()
-    _meter.charge(units)
+    if _meter is not None:  # outside an evaluation (xacro printing a result) nothing is charged
+        _meter.charge(units)
 
 
 # --- sizes ----------------------------------------------------------------------------
@@ -665,12 +663,16 @@ def compile_expression(text: str) -> types.CodeType:
 def evaluate(text: str, symbols: dict[str, Any]) -> Any:
     """Evaluate ``text`` with ``symbols`` as its names (a xacro property table, or a dict).
 
-    The result is bounded like every intermediate value.
+    The result is bounded like every intermediate value. Work is charged to the
+    :class:`Meter` of :func:`metered`, or to a fresh one for this expression alone.
 
     Raises:
         ExpressionError: The expression uses what a model may not.
         ExpressionLimitError: It needs more work, memory or time than allowed.
     """
+    if _meter is None:
+        with metered(Meter()):
+            return evaluate(text, symbols)
     code = compile_expression(text)
     # Builtins come from the globals' own storage: only the guards, never Python's.
     dict.__setitem__(symbols, "__builtins__", HELPERS)
