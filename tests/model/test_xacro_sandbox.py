@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from workbench.model import xacro_eval
+from workbench.model import xacro_eval, xacro_meter
 from workbench.model.packages import PackageResolver
 from workbench.model.sources import XacroError, expand_xacro
 from workbench.model.xacro_sandbox import XacroRun
@@ -95,7 +95,7 @@ def symbols():
 
 
 def _evaluate(text: str, symbols: dict) -> object:
-    with xacro_eval.metered(xacro_eval.Meter()):
+    with xacro_meter.metered(xacro_meter.Meter()):
         return xacro_eval.evaluate(text, dict(symbols))
 
 
@@ -167,14 +167,14 @@ def test_expressions_cannot_reach_python(symbols, text, message):
     ],
 )
 def test_expressions_are_bounded(symbols, text, message):
-    with pytest.raises(xacro_eval.ExpressionLimitError) as info:
+    with pytest.raises(xacro_meter.ExpressionLimitError) as info:
         _evaluate(text, symbols)
     assert message in info.value.message
 
 
 def test_the_meter_stops_at_its_step_budget():
-    meter = xacro_eval.Meter(max_steps=1000)
-    with pytest.raises(xacro_eval.ExpressionLimitError, match="more than 1,000 operations"):
+    meter = xacro_meter.Meter(max_steps=1000)
+    with pytest.raises(xacro_meter.ExpressionLimitError, match="more than 1,000 operations"):
         meter.charge(1001)
 
 

@@ -5,7 +5,7 @@ macros, blocks, conditionals, includes, ``load_yaml``. While it runs for one
 file, workbench replaces the pieces of it that touch the world:
 
 * ``${...}`` is evaluated by :mod:`workbench.model.xacro_eval` (no attribute walks
-  to globals, bounded integers, sizes, work and time);
+  to globals; bounded integers, sizes, work and time, :mod:`workbench.model.xacro_meter`);
 * ``<xacro:include>``, ``xacro.load_yaml()`` and the file itself may read only
   regular files of at most :data:`~workbench.model.limits.MAX_MODEL_BYTES` inside
   the model's package (the directory of the nearest ``package.xml`` above the
@@ -31,9 +31,12 @@ from pathlib import Path
 from typing import Any
 
 from workbench.errors import ModelError
-from workbench.model import xacro_eval
 from workbench.model.limits import MAX_MODEL_BYTES, MAX_XACRO_ELEMENTS, check_input_file
 from workbench.model.packages import PackageResolver
+from workbench.model.xacro_eval import evaluate
+from workbench.model.xacro_guards import REMOVED_PYTHON, SafeFunction
+from workbench.model.xacro_meter import ExpressionLimitError, Meter, metered
+from workbench.model.xacro_namespaces import math_functions, python_functions
 
 _LOCK = threading.RLock()
 _PATCHED = (
@@ -118,7 +121,7 @@ class XacroRun:
         self.roots = [package_root(self.path)] + [
             directory.resolve() for directory in packages.packages.values()
         ]
-        self.meter = xacro_eval.Meter()
+        self.meter = Meter()
         self.elements = 0
 
     # --- files -------------------------------------------------------------------------
@@ -153,9 +156,7 @@ class XacroRun:
             with open(path, encoding="utf-8") as handle:
                 data = yaml.safe_load(handle)
         except RecursionError:
-            raise xacro_eval.ExpressionLimitError(
-                f"YAML file {path} is nested too deeply"
-            ) from None
+            raise ExpressionLimitError(f"YAML file {path} is nested too deeply") from None
         except (UnicodeDecodeError, yaml.YAMLError) as error:
             reason = " ".join(str(error).split())
             raise xacro.XacroException(f"cannot read YAML file {path}: {reason}") from None
@@ -180,7 +181,7 @@ class XacroRun:
         self.elements += elements
         self.meter.charge(elements)
         if self.elements > MAX_XACRO_ELEMENTS:
-            raise xacro_eval.ExpressionLimitError(
+            raise ExpressionLimitError(
                 f"the expansion processes more than {MAX_XACRO_ELEMENTS:,} XML elements",
                 hint="a model's macros may not multiply without end; see 'Limits on input' "
                 "in the README",
@@ -205,14 +206,14 @@ class XacroRun:
     # --- expressions and substitutions ---------------------------------------------
 
     def safe_eval(self, expression: str, symbols: Any, locals: Any = None) -> Any:
-        return xacro_eval.evaluate(expression, symbols)
+        return evaluate(expression, symbols)
 
     def symbols(self) -> dict[str, Any]:
         """xacro's global symbols, re-made (see :func:`xacro.create_global_symbols`)."""
         import xacro
 
-        python = xacro_eval.python_functions()
-        math_functions = xacro_eval.math_functions()
+        python = python_functions()
+        maths = math_functions()
         result: dict[str, Any] = {}
         direct: tuple[str, ...] = (
             "list",
@@ -229,13 +230,13 @@ class XacroRun:
         direct += ("min", "max", "round", "sorted", "range")
         for name in direct:
             result[name] = python[name]
-        result.update(math_functions)
-        namespaces = {"python": python, "math": math_functions, "xacro": self._xacro_functions()}
+        result.update(maths)
+        namespaces = {"python": python, "math": maths, "xacro": self._xacro_functions()}
         for name, functions in namespaces.items():
             space = xacro.NameSpace()
             space.update(functions)
             result[name] = space
-        vars(result["python"])["removed_names"] = xacro_eval.REMOVED_PYTHON
+        vars(result["python"])["removed_names"] = REMOVED_PYTHON
         for name in ("load_yaml", "abs_filename", "dotify"):
             result[name] = result["xacro"][name]
         return result
@@ -275,8 +276,7 @@ class XacroRun:
         for function in (xacro.message, xacro.warning, xacro.error, xacro.print_location):
             functions[function.__name__] = report(function)
         return {
-            name: xacro_eval.SafeFunction(function, f"xacro.{name}")
-            for name, function in functions.items()
+            name: SafeFunction(function, f"xacro.{name}") for name, function in functions.items()
         }
 
     def extension(self, text: str) -> Any:
@@ -289,7 +289,7 @@ class XacroRun:
         command, _, rest = body.partition(" ")
         words = rest.split()
         if command == "eval":
-            return str(xacro_eval.evaluate(rest, self._eval_names()))
+            return str(evaluate(rest, self._eval_names()))
         if command == "arg" and len(words) == 1:
             arguments = xacro.substitution_args_context.get("arg", {})
             if words[0] not in arguments:
@@ -323,8 +323,8 @@ class XacroRun:
         from xacro.substitution_args import convert_value
 
         arguments = dict(xacro.substitution_args_context.get("arg", {}))
-        safe = xacro_eval.SafeFunction
-        names: dict[str, Any] = dict(xacro_eval.math_functions())
+        safe = SafeFunction
+        names: dict[str, Any] = dict(math_functions())
         names.update({"true": True, "false": False, "True": True, "False": False})
         names["arg"] = safe(lambda name: convert_value(arguments[name], "auto"), "arg")
         names["dirname"] = safe(lambda: os.path.dirname(str(self.path)), "dirname")
@@ -360,7 +360,7 @@ class XacroRun:
             )
             xacro.all_includes = []
             try:
-                with xacro_eval.metered(self.meter):
+                with metered(self.meter):
                     yield xacro
             finally:
                 for name, value in saved.items():
@@ -387,7 +387,7 @@ def expand(path: Path, mappings: dict[str, str] | None = None) -> str:
             raise
         text = document.toprettyxml(indent="  ")
     if len(text) > MAX_MODEL_BYTES:
-        raise xacro_eval.ExpressionLimitError(
+        raise ExpressionLimitError(
             f"the expanded model has {len(text):,} characters; at most {MAX_MODEL_BYTES:,}"
         )
     return text
