@@ -45,11 +45,7 @@ class WorkbenchError(Exception):
         super().__init__(self.one_line())
 
     def one_line(self) -> str:
-        """The error as one line: ``path:line: message (hint)``.
-
-        Line breaks and tabs that came in with a name from a file are shown as ``\\n``
-        and ``\\t``, so the error stays one line whatever the input held.
-        """
+        """The error as one line: ``path:line: message (hint)``."""
         where = ""
         if self.path is not None:
             where = self.path if self.line is None else f"{self.path}:{self.line}"
@@ -57,7 +53,7 @@ class WorkbenchError(Exception):
         text = f"{where}{self.message}"
         if self.hint:
             text += f" ({self.hint})"
-        return text.translate(_ONE_LINE)
+        return text
 
 
 class MissingDependencyError(WorkbenchError, ImportError):
@@ -84,7 +80,15 @@ class TransformError(WorkbenchError):
 
 
 class ModelError(WorkbenchError):
-    """A robot description (URDF, SDF, xacro) cannot be read or loaded."""
+    """A robot description (URDF, SDF, xacro) cannot be read or loaded.
+
+    Names in its message come from the file and may hold line breaks or tabs; they are
+    shown as ``\\n`` and ``\\t``, so the error stays one line whatever the file held.
+    """
+
+    def one_line(self) -> str:
+        """The error as one line: ``path:line: message (hint)``, line breaks escaped."""
+        return super().one_line().translate(_ONE_LINE)
 
 
 class ViewerError(WorkbenchError):

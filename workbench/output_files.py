@@ -52,6 +52,13 @@ KINDS: dict[str, tuple[str, Callable[[bytes], bool]]] = {
 }
 
 
+def _is_dir(path: Path) -> bool:
+    try:
+        return path.is_dir()
+    except (OSError, ValueError):  # a name too long to look up: no such folder
+        return False
+
+
 def _refuse(message: str, hint: str, error: type[WorkbenchError]) -> WorkbenchError:
     return error(message, hint=hint)
 
@@ -82,7 +89,7 @@ def check_output(
     what, looks_ours = KINDS[kind]
     label = f"{option} {path}" if option else str(path)
     folder = path.parent if str(path.parent) else Path(".")
-    if not folder.is_dir():
+    if not _is_dir(folder):
         raise _refuse(
             f"cannot write {label}: the folder {folder} does not exist",
             "create it first; workbench does not create folders",

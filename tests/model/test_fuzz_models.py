@@ -38,6 +38,9 @@ MUTANTS = 300
 SEED = 17
 FEATURES = REPO / "tests" / "data" / "xacro_features"
 
+#: Mesh file names that are not meshes, or not files at all.
+HOSTILE_FILES = ["/dev/zero", "/proc/self/mem", "/etc", "/etc/passwd.obj", "x" * 5000 + ".obj"]
+HOSTILE_FILES += ["package://no_such/x.obj", "file:///etc/hostname.stl", "", "../../x.dae", "a.3ds"]
 NUMERIC = {"xyz", "rpy", "size", "radius", "length", "scale", "value", "lower", "upper"}
 NUMERIC |= {"effort", "velocity", "ixx", "ixy", "ixz", "iyy", "iyz", "izz", "rgba", "damping"}
 
@@ -54,6 +57,7 @@ def _mutate_tree(root, rng: random.Random, sentinel: Path, xacro: bool) -> str:
     element = rng.choice(elements)
     kind = rng.choice(
         ["number", "number", "name", "delete", "duplicate", "attribute", "move", "nest", "text"]
+        + ["filename"]
         + (["expression", "expression", "macro", "include"] if xacro else [])
     )
     if kind == "number":
@@ -70,6 +74,19 @@ def _mutate_tree(root, rng: random.Random, sentinel: Path, xacro: bool) -> str:
         value = rng.choice(HOSTILE_NAMES)
         target.set("name", value)
         return f"{target.tag} name={value[:30]!r}"
+    if kind == "filename":
+        value = rng.choice(HOSTILE_FILES)
+        meshes = [e for e in elements if e.tag == "mesh"]
+        uris = [e for e in elements if e.tag == "uri"]
+        if meshes:
+            rng.choice(meshes).set("filename", value)
+        elif uris:
+            rng.choice(uris).text = value
+        else:
+            visual = etree.SubElement(rng.choice(elements), "visual")
+            geometry = etree.SubElement(visual, "geometry")
+            etree.SubElement(geometry, "mesh", filename=value)
+        return f"mesh file {value[:40]!r}"
     if kind == "delete" and element is not root:
         element.getparent().remove(element)
         return f"deleted <{element.tag}>"

@@ -98,14 +98,14 @@ def scene_path(text: str) -> Path:
     Raises:
         SceneError: Neither exists; names the available scenes.
     """
-    from workbench.paths import planning_dir
+    from workbench.paths import is_file, planning_dir
     from workbench.planning.errors import SceneError
 
     path = Path(text)
-    if path.is_file():
+    if is_file(path):
         return path
     for candidate in (planning_dir() / "scenes" / text, planning_dir() / "scenes" / f"{text}.yaml"):
-        if candidate.is_file():
+        if is_file(candidate):
             return candidate
     available = sorted(p.stem for p in (planning_dir() / "scenes").glob("*.yaml"))
     raise SceneError(

@@ -15,6 +15,7 @@ from typing import Any
 
 from workbench.errors import ModelError
 from workbench.model.limits import MAX_MESH_BYTES, check_input_file
+from workbench.paths import exists
 
 #: Formats Drake's parser and Meshcat read directly.
 NATIVE_FORMATS = (".obj", ".gltf", ".glb", ".vtk")
@@ -44,7 +45,7 @@ def check_mesh(path: Path, *, where: Path | None = None, line: int | None = None
             line=line,
             hint="use .obj, .gltf, .stl, .dae or .ply",
         )
-    if not path.exists():
+    if not exists(path):
         raise MeshError(
             f"mesh file not found: {path}",
             path=where,

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from workbench.errors import ModelError
 from workbench.model.robot_library import INSTALL_HINT, library_robot, library_robots, library_root
-from workbench.paths import urdf_dir
+from workbench.paths import is_dir, is_file, urdf_dir
 
 #: Suffixes tried, in order, for a bare name such as ``robot_arm``.
 NAME_SUFFIXES = (".urdf", ".urdf.xacro", ".xacro", ".sdf")
@@ -52,9 +52,9 @@ def resolve_robot_path(source: str | os.PathLike[str]) -> Path:
     """
     text = os.fspath(source)
     path = Path(text).expanduser()
-    if path.is_file():
+    if is_file(path):
         return path.resolve()
-    if path.is_dir():
+    if is_dir(path):
         raise ModelError(
             "is a directory, not a robot description",
             path=path,
@@ -67,7 +67,7 @@ def resolve_robot_path(source: str | os.PathLike[str]) -> Path:
         for suffix in NAME_SUFFIXES:
             candidate = directory / f"{text}{suffix}"
             tried.append(candidate)
-            if candidate.is_file():
+            if is_file(candidate):
                 return candidate.resolve()
         described = library_robot(text)
         if described is not None:

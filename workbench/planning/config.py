@@ -36,7 +36,7 @@ from typing import Any
 import yaml
 
 from workbench.errors import PlanningError
-from workbench.paths import planning_dir, urdf_dir
+from workbench.paths import is_dir, is_file, planning_dir, urdf_dir
 from workbench.planning.srdf import Srdf, SrdfError, read_srdf
 
 CONFIG_FILE = "planning.yaml"
@@ -260,12 +260,12 @@ def find_config(source: str | os.PathLike[str]) -> Path:
         ConfigNotFoundError: None exists.
     """
     path = Path(source)
-    if path.is_file() and path.suffix in (".yaml", ".yml"):
+    if is_file(path) and path.suffix in (".yaml", ".yml"):
         return path
-    if path.is_dir() and (path / CONFIG_FILE).is_file():
+    if is_dir(path) and is_file(path / CONFIG_FILE):
         return path / CONFIG_FILE
     candidate = config_dir(source) / CONFIG_FILE
-    if candidate.is_file():
+    if is_file(candidate):
         return candidate
     raise ConfigNotFoundError(
         f"no planning configuration for '{source}' (looked for {candidate})",
@@ -413,7 +413,7 @@ def _resolve_robot(value: str, base: Path, file: Path) -> Path:
     candidates.append(base / value)
     candidates.append(Path(value).expanduser())
     for candidate in candidates:
-        if candidate.is_file():
+        if is_file(candidate):
             return candidate.resolve()
     raise ConfigError(
         f"robot '{value}' not found (tried {', '.join(str(c) for c in candidates)})",

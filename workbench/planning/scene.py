@@ -38,6 +38,7 @@ import numpy as np
 import yaml
 
 from workbench.errors import ModelError
+from workbench.paths import is_file
 from workbench.planning.errors import SceneError
 from workbench.spatial import Box, Cylinder, Mesh, Shape, Sphere, matrix_from_rpy, pose_matrix
 from workbench.spatial.shapes import SHAPE_FIELDS
@@ -273,7 +274,7 @@ def _validate(obj: SceneObject) -> None:
     if obj.type == "cylinder" and not (math.isfinite(obj.length) and obj.length > 0):
         raise SceneError(f"cylinder '{obj.name}' needs a positive length, got {obj.length}")
     if obj.type == "mesh":
-        if obj.filename is None or not Path(obj.filename).is_file():
+        if obj.filename is None or not is_file(obj.filename):
             raise SceneError(f"mesh '{obj.name}': file '{obj.filename}' not found")
         if not (math.isfinite(obj.scale) and obj.scale > 0):
             raise SceneError(f"mesh '{obj.name}' needs a positive scale, got {obj.scale}")
@@ -289,7 +290,7 @@ def load_scene(path: str | os.PathLike[str]) -> PlanningScene:
         SceneError: naming the file and line of the first bad object.
     """
     path = Path(path)
-    if not path.is_file():
+    if not is_file(path):
         raise SceneError(f"scene file '{path}' not found", hint="give a path to a .yaml scene")
     text = _read_text(path)
     try:

@@ -453,9 +453,10 @@ def read_srdf(path: str | os.PathLike[str]) -> Srdf:
     """
     from workbench.errors import ModelError
     from workbench.model.limits import check_input_file
+    from workbench.paths import exists
 
     path = Path(path)
-    if not path.exists():
+    if not exists(path):
         raise SrdfError(
             "SRDF file not found", path=path, hint="check the path or run workbench setup"
         )
