@@ -291,9 +291,10 @@ def load_config(source: str | os.PathLike[str]) -> PlanningConfig:
         data = yaml.safe_load(_read_text(file))
     except yaml.MarkedYAMLError as exc:
         line = exc.problem_mark.line + 1 if exc.problem_mark else None
-        raise ConfigError(f"malformed YAML: {exc.problem}", path=file, line=line) from None
+        problem = " ".join(str(exc.problem or exc).split())
+        raise ConfigError(f"malformed YAML: {problem}", path=file, line=line) from None
     except yaml.YAMLError as exc:
-        raise ConfigError(f"malformed YAML: {exc}", path=file) from None
+        raise ConfigError(f"malformed YAML: {' '.join(str(exc).split())}", path=file) from None
     except RecursionError:
         raise ConfigError("the YAML is nested too deeply", path=file) from None
     if not isinstance(data, dict):

@@ -302,9 +302,8 @@ def load_scene(path: str | os.PathLike[str]) -> PlanningScene:
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         line = mark.line + 1 if mark is not None else None
-        raise SceneError(
-            f"not valid YAML: {getattr(exc, 'problem', exc)}", path=path, line=line
-        ) from None
+        problem = " ".join(str(getattr(exc, "problem", None) or exc).split())
+        raise SceneError(f"not valid YAML: {problem}", path=path, line=line) from None
     if data is None:
         return PlanningScene(source=path)
     if isinstance(data, dict):
