@@ -53,6 +53,8 @@ SDF_NUMBERS = frozenset(
     + ("pose", "mass", "spring_reference", "spring_stiffness", "stiffness", "dissipation")
     + ("mu", "mu2", "radii")
 )
+#: SDF elements whose text names another element (a joint's links).
+SDF_REFERENCES = ("parent", "child")
 #: SDF shapes and the sizes that must be above zero (sphere radius may be zero).
 SDF_SIZES = {"box": ("size",), "cylinder": ("radius", "length"), "capsule": ("radius", "length")}
 SDF_SIZES |= {"ellipsoid": ("radii",), "sphere": ()}
@@ -178,6 +180,16 @@ def check_sdf_file(path: Path) -> None:
                     path,
                     element,
                     "write finite numbers",
+                )
+        if element.tag in SDF_REFERENCES and element.text and element.getparent().tag == "joint":
+            problem = name_problem(element.text.strip())
+            if problem is not None:
+                raise _fail(
+                    f"{_label(element, SDF_NAMED)}: the name '{shown_name(element.text.strip())}' "
+                    f"{problem}",
+                    path,
+                    element,
+                    "give it a short name of printable characters",
                 )
         if element.tag in SDF_SIZES:
             _check_sdf_shape(element, path)

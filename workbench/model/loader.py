@@ -23,6 +23,8 @@ class DrakeLoadError(ModelError):
 
 
 _LOG = logging.getLogger("workbench.model")
+#: Longest part of a Drake message kept in an error, characters.
+_LONGEST_MESSAGE = 500
 
 
 #: URDF tags for ROS's drivers that Drake ignores with a warning; not worth one when loading
@@ -84,6 +86,8 @@ def _drake_error(
     match = re.match(r"^(?:.*?):(\d+): (?:error: )?(.*)$", message)
     if match:
         line_number, message = int(match.group(1)), match.group(2)
+    if len(message) > _LONGEST_MESSAGE:  # Drake repeats names from the file, however long
+        message = message[: _LONGEST_MESSAGE - 3] + "..."
     element = document.element_at(line_number) if document is not None else "model"
     where = "" if element == "model" else f"{element}: "
     return DrakeLoadError(
