@@ -34,6 +34,7 @@ LAYERS: dict[str, int] = {
     "limits": 0,
     "optional": 0,
     "paths": 0,
+    "output_files": 0,
     "entry_points": 0,
     "spatial": 0,
     # ROS 1 message types

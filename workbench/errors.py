@@ -14,6 +14,9 @@ from __future__ import annotations
 
 import os
 
+#: Characters that would break an error's single line, and how they are shown instead.
+_ONE_LINE = str.maketrans({"\n": "\\n", "\r": "\\r", "\t": "\\t", "\v": "\\v", "\f": "\\f"})
+
 
 class WorkbenchError(Exception):
     """Base class of every error workbench raises on bad input or bad state.
@@ -77,7 +80,15 @@ class TransformError(WorkbenchError):
 
 
 class ModelError(WorkbenchError):
-    """A robot description (URDF, SDF, xacro) cannot be read or loaded."""
+    """A robot description (URDF, SDF, xacro) cannot be read or loaded.
+
+    Names in its message come from the file and may hold line breaks or tabs; they are
+    shown as ``\\n`` and ``\\t``, so the error stays one line whatever the file held.
+    """
+
+    def one_line(self) -> str:
+        """The error as one line: ``path:line: message (hint)``, line breaks escaped."""
+        return super().one_line().translate(_ONE_LINE)
 
 
 class ViewerError(WorkbenchError):

@@ -185,3 +185,32 @@ def cache_root() -> Path:
         return Path(explicit)
     xdg = os.environ.get("XDG_CACHE_HOME")
     return (Path(xdg) if xdg else Path.home() / ".cache") / "workbench"
+
+
+def is_file(path: str | os.PathLike[str]) -> bool:
+    """``Path(path).is_file()``, False (not an error) for a name the system cannot look up.
+
+    A path from a model or a scene may be longer than the system allows (``File name too
+    long``) or loop through links; ``pathlib`` raises for those, where "no such file" is the
+    answer the caller can report.
+    """
+    try:
+        return Path(path).is_file()
+    except (OSError, ValueError):
+        return False
+
+
+def is_dir(path: str | os.PathLike[str]) -> bool:
+    """``Path(path).is_dir()``, False for a name the system cannot look up (see :func:`is_file`)."""
+    try:
+        return Path(path).is_dir()
+    except (OSError, ValueError):
+        return False
+
+
+def exists(path: str | os.PathLike[str]) -> bool:
+    """``Path(path).exists()``, False for a name the system cannot look up (see :func:`is_file`)."""
+    try:
+        return Path(path).exists()
+    except (OSError, ValueError):
+        return False

@@ -53,11 +53,29 @@ def test_plan_prints_the_summary_and_writes_json_and_csv(capsys, tmp_path, arm3_
     assert plot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
-def test_plan_runs_setup_first_when_there_is_no_config(capsys, tmp_path):
-    status = plan_cli.plan("arm3", "home", start="q=0.5,0.2,0.1", config_dir=str(tmp_path / "cfg"))
+def test_plan_runs_setup_first_when_there_is_no_config(capsys, tmp_path, monkeypatch):
+    import shutil
+
+    from workbench.paths import urdf_dir
+
+    home = tmp_path / "home"
+    (home / "urdf").mkdir(parents=True)
+    (home / "planning").mkdir()
+    shutil.copy(urdf_dir() / "arm3.urdf", home / "urdf" / "arm3.urdf")
+    monkeypatch.setenv("WORKBENCH_HOME", str(home))
+    status = plan_cli.plan("arm3", "home", start="q=0.5,0.2,0.1")
     assert status == 0
     assert "running setup first" in capsys.readouterr().out
-    assert (tmp_path / "cfg" / "planning.yaml").is_file()
+    assert (home / "planning" / "arm3" / "planning.yaml").is_file()
+
+
+def test_plan_never_writes_a_config_into_the_folder_of_config(tmp_path, capsys):
+    target = tmp_path / "etc" / "cfg"
+    assert main(["plan", "arm3", "--to", "home", "--config", str(target)]) == 1
+    error = capsys.readouterr().err
+    assert error.count("\n") == 1 and f"no planning configuration in {target}" in error
+    assert f"workbench setup arm3 -o {target}" in error
+    assert not (tmp_path / "etc").exists()
 
 
 @pytest.mark.parametrize(
@@ -70,14 +88,17 @@ def test_plan_runs_setup_first_when_there_is_no_config(capsys, tmp_path):
             "start: joint 'base_yaw_joint' = 9.0000 is outside",
         ),
         (["--to", "q=0,0,", "--seed", "-1"], "--seed must not be negative"),
-        (["--to", "home", "--json", "/no/such/dir/t.json"], "its folder does not exist"),
+        (
+            ["--to", "home", "--json", "/no/such/dir/t.json"],
+            "the folder /no/such/dir does not exist",
+        ),
         (["--to", "random", "--planner", "RRTfoo"], "unknown planner 'RRTfoo'"),
         (
             ["--to", "home", "--scene", str(DATA / "bad_type.yaml")],
             "bad_type.yaml:5: object 'cone' has unknown type",
         ),
         (["--to", "xyz=2,2,2"], "no joint values within the limits"),
-        (["--to", "random", "--time-limit", "-1"], "--time-limit must be positive"),
+        (["--to", "random", "--time-limit", "-1"], "--time-limit must be a positive number"),
     ],
 )
 def test_plan_bad_input_is_one_line(capsys, arm3_config, args, message):  # noqa: F811

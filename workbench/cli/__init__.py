@@ -12,7 +12,10 @@ unpacks the options and calls typed functions of the same module (``plan(robot,
 goal, ...)``), which tests call directly and which check cheap things (syntax,
 names, numbers, files) before loading anything heavy. Errors derived from
 :class:`~workbench.errors.WorkbenchError` are printed as one line on stderr with
-a non-zero exit status; ``WORKBENCH_DEBUG=1`` shows the traceback instead.
+a non-zero exit status; ``workbench --debug COMMAND ...`` (or ``WORKBENCH_DEBUG=1``)
+shows the traceback instead. Anything else a command raises is a bug, not bad input:
+it is reported as one line naming the command and its arguments, asking to report
+it, with exit status 70 (the traceback again only under ``--debug``).
 SIGINT and SIGTERM unwind a command as Ctrl-C does (its ``finally`` blocks run),
 also in a background job, and it exits with 130 or 143 (see
 :mod:`workbench.cli.signals`).
@@ -89,6 +92,9 @@ def _top_parser(commands: dict[str, str]) -> argparse.ArgumentParser:
         "Run 'workbench COMMAND --help' for a command's options.",
     )
     parser.add_argument("--version", action="version", version=f"workbench {__version__}")
+    parser.add_argument(
+        "--debug", action="store_true", help="show the Python traceback behind an error"
+    )
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     for name, text in commands.items():
         sub.add_parser(name, help=text, add_help=False)
@@ -100,6 +106,31 @@ def _report(command: str, error: WorkbenchError) -> int:
     return error.exit_code
 
 
+#: Exit status of a command that failed on a bug (sysexits' EX_SOFTWARE).
+INTERNAL_ERROR_STATUS = 70
+
+
+def _shorten(text: str, length: int) -> str:
+    text = " ".join(text.split())
+    return text if len(text) <= length else text[: length - 3] + "..."
+
+
+def _internal_error(args: Sequence[str], error: BaseException) -> int:
+    """The top-level guard's line: what failed, on which input, and that it is a bug."""
+    import shlex
+
+    command = args[0] if args else ""
+    reason = _shorten(str(error), 200)
+    what = type(error).__name__ + (f": {reason}" if reason else "")
+    invocation = _shorten(shlex.join(["workbench", *args]), 200)
+    print(
+        f"workbench {command}: internal error: {what} (while running: {invocation}; "
+        "please report this, with the input; 'workbench --debug ...' shows the traceback)",
+        file=sys.stderr,
+    )
+    return INTERNAL_ERROR_STATUS
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the process exit status.
 
@@ -109,9 +140,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     from workbench.cli.signals import Terminated, ignore_stop_signals, stop_on_signals
 
     args = list(sys.argv[1:] if argv is None else argv)
+    debug = bool(os.environ.get("WORKBENCH_DEBUG"))
+    while args and args[0] == "--debug":  # a top-level option, before the command
+        debug = True
+        args = args[1:]
     with stop_on_signals() as stop:
         try:
-            status = _dispatch(args)
+            status = _dispatch(args, debug)
         except Terminated:
             status = 128 + signal.SIGTERM
         except KeyboardInterrupt:
@@ -121,6 +156,10 @@ def main(argv: Sequence[str] | None = None) -> int:
 
             silence_stdout()
             status = 0
+        except Exception as error:  # the guard: a bug, not bad input (that is a WorkbenchError)
+            if debug:
+                raise
+            status = _internal_error(args, error)
     if stop.exit_status is not None and argv is None:
         # Stopping: a second signal (a launcher forwards the terminal's Ctrl-C) must not
         # break into the interpreter's exit with a KeyboardInterrupt traceback.
@@ -131,7 +170,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     return status
 
 
-def _dispatch(args: list[str]) -> int:
+def _dispatch(args: list[str], debug: bool = False) -> int:
     commands = available_commands()
     if not args or args[0] not in commands:
         # --help, --version, no command, or an unknown one: argparse says it.
@@ -145,13 +184,13 @@ def _dispatch(args: list[str]) -> int:
     try:
         return int(module.run(options) or 0)
     except WorkbenchError as error:
-        if isinstance(error, KeyboardInterrupt) or os.environ.get("WORKBENCH_DEBUG"):
+        if isinstance(error, KeyboardInterrupt) or debug:
             raise  # rospy's ROSInterruptException: a stop, not an error (main exits 130)
         return _report(command, error)
     except ModuleNotFoundError as error:
         # An optional package of an extra that is not installed: say which extra.
         extra = EXTRA_OF_MODULE.get((error.name or "").split(".")[0])
-        if extra is None or os.environ.get("WORKBENCH_DEBUG"):
+        if extra is None or debug:
             raise
         missing = MissingDependencyError(
             f"the optional package '{error.name}' is not installed",

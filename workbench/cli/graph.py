@@ -42,6 +42,8 @@ def graph(file: str, *, fmt: str | None = None, output: str | None = None) -> in
 
     from workbench.errors import ModelError
     from workbench.model.graph import read_graph_document, write_graph
+    from workbench.model.limits import file_stem_problem, shown_name
+    from workbench.output_files import check_output
 
     if fmt is not None and fmt not in FORMATS:
         raise ModelError(f"unknown format '{fmt}'", hint=f"use one of {', '.join(FORMATS)}")
@@ -53,7 +55,23 @@ def graph(file: str, *, fmt: str | None = None, output: str | None = None) -> in
         else:
             gv, rendered = out.with_suffix(".gv"), out
     else:
+        problem = file_stem_problem(document.name)
+        if problem is not None:
+            raise ModelError(
+                f"the robot name '{shown_name(document.name)}' cannot name the output file: "
+                f"it {problem}",
+                path=document.path,
+                hint="give the output file with -o OUT",
+            )
         gv, rendered = Path(f"{document.name}.gv"), Path(f"{document.name}.{fmt or 'pdf'}")
+    check_output(gv, "graphviz", error=ModelError)
+    if rendered is not None:
+        kind = fmt or rendered.suffix.lstrip(".").lower() or "pdf"
+        if kind not in FORMATS:
+            raise ModelError(
+                f"cannot tell the format of {rendered}", hint=f"use --format {'|'.join(FORMATS)}"
+            )
+        check_output(rendered, kind, error=ModelError)
     # The .gv is announced before rendering, so it is reported even when dot is missing.
     written = write_graph(document, gv, None)
     print(f"Created file {written[0]}")

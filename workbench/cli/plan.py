@@ -13,7 +13,7 @@ first (``workbench setup ROBOT``) and says so.
 from __future__ import annotations
 
 import argparse
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -48,11 +48,14 @@ def configure(parser: argparse.ArgumentParser) -> None:
         type=int,
         help="seed of planner, random goal and IK (default: a fresh one, printed to repeat the run)",
     )
-    parser.add_argument("--time-limit", type=float, metavar="S", help="planning time limit (s)")
+    parser.add_argument(
+        "--time-limit", type=float, metavar="S", help="planning time limit (s, at most 3600)"
+    )
     parser.add_argument(
         "--config",
         metavar="DIR",
-        help="planning configuration directory (default: planning/ROBOT/)",
+        help="read the planning configuration from DIR (default: planning/ROBOT/, written by "
+        "the setup assistant when missing; write another with: workbench setup ROBOT -o DIR)",
     )
     parser.add_argument("--execute", action="store_true", help="execute the plan in simulation")
     parser.add_argument("--html", metavar="OUT", help="write a Meshcat snapshot with the animation")
@@ -95,20 +98,33 @@ def scene_path(text: str) -> Path:
     Raises:
         SceneError: Neither exists; names the available scenes.
     """
-    from workbench.paths import planning_dir
+    from workbench.paths import is_file, planning_dir
     from workbench.planning.errors import SceneError
 
     path = Path(text)
-    if path.is_file():
+    if is_file(path):
         return path
     for candidate in (planning_dir() / "scenes" / text, planning_dir() / "scenes" / f"{text}.yaml"):
-        if candidate.is_file():
+        if is_file(candidate):
             return candidate
     available = sorted(p.stem for p in (planning_dir() / "scenes").glob("*.yaml"))
     raise SceneError(
         f"scene '{text}' not found",
         hint=f"give a YAML path or one of: {', '.join(available) or '(none)'}",
     )
+
+
+#: Output option -> the kind of file it writes (see :mod:`workbench.output_files`).
+OUTPUT_KINDS = {
+    "--html": "html-snapshot",
+    "--plot": "png",
+    "--json": "trajectory-json",
+    "--csv": "trajectory-csv",
+}
+#: Longest planning time a request may ask for, s.
+MAX_TIME_LIMIT = 3600.0
+#: Seeds are unsigned 32-bit numbers (OMPL's and numpy's).
+MAX_SEED = 2**32 - 1
 
 
 def check_options(
@@ -118,35 +134,56 @@ def check_options(
     planner: str | None = None,
     seed: int = 0,
     time_limit: float | None = None,
-    outputs: tuple[str | None, ...] = (),
+    outputs: Mapping[str, str | None] | None = None,
 ) -> str | None:
-    """The checks that need no robot: goal syntax, planner name, numbers, output folders.
+    """The checks that need no robot: goal syntax, planner name, numbers, output files.
+
+    Args:
+        outputs: Option (``--json``, a key of :data:`OUTPUT_KINDS`) -> the file it names.
 
     Returns:
         The canonical planner name, or None for the configuration's default.
 
     Raises:
-        GoalError: A malformed goal or start, a negative seed or a non-positive time limit.
+        GoalError: A malformed goal or start, a seed outside 0..2^32-1, or a time limit
+            that is not a positive number of at most an hour.
         UnknownPlannerError: An unknown planner (naming close matches).
-        PlanningError: An output file's folder does not exist.
+        PlanningError: An output's folder does not exist, it names a directory, device or
+            someone else's file, a plot that is not ``.png``, or two outputs name one file.
     """
     from workbench.errors import PlanningError
+    from workbench.output_files import check_output
     from workbench.planning.errors import GoalError
     from workbench.planning.goals import parse_goal
     from workbench.planning.ompl_planner import planner_name
 
-    if time_limit is not None and not time_limit > 0:
-        raise GoalError(f"--time-limit must be positive, got {time_limit:g}")
+    if time_limit is not None and not 0 < time_limit <= MAX_TIME_LIMIT:
+        raise GoalError(
+            f"--time-limit must be a positive number of seconds up to {MAX_TIME_LIMIT:g}, "
+            f"got {time_limit:g}"
+        )
     if seed < 0:
         raise GoalError(f"--seed must not be negative, got {seed}")
+    if seed > MAX_SEED:
+        raise GoalError(f"--seed must be at most {MAX_SEED} (32 bits), got {seed}")
     parse_goal(goal)
     if start is not None:
         parse_goal(start)
-    for out in outputs:
-        if out is not None and not Path(out).resolve().parent.is_dir():
+    named: dict[Path, str] = {}
+    for option, out in (outputs or {}).items():
+        if out is None:
+            continue
+        if option == "--plot" and Path(out).suffix.lower() != ".png":
             raise PlanningError(
-                f"cannot write {out}: its folder does not exist", hint="create it first"
+                f"--plot {out}: the plot is a PNG image", hint="give a file name ending in .png"
             )
+        path = check_output(out, OUTPUT_KINDS[option], option=option, error=PlanningError)
+        key = path.resolve()
+        if key in named:
+            raise PlanningError(
+                f"{named[key]} and {option} both name {out}", hint="give each its own file"
+            )
+        named[key] = option
     return planner_name(planner) if planner is not None else None
 
 
@@ -203,7 +240,7 @@ def plan(
         planner=planner,
         seed=seed,
         time_limit=time_limit,
-        outputs=(html, plot, json_out, csv_out),
+        outputs={"--html": html, "--plot": plot, "--json": json_out, "--csv": csv_out},
     )
     from workbench.planning.scene import load_scene
 
@@ -275,22 +312,32 @@ def _execute(motion: Any, result: Any) -> Any:
 
 
 def _load_or_setup(robot: str, config_dir: str | None):
+    """The robot's planning configuration; the setup runs first only for the default folder.
+
+    A folder given with ``--config`` is read, never written: the setup assistant
+    writes where ``workbench setup -o DIR`` is told to.
+    """
     from workbench.model.sources import resolve_robot_path
-    from workbench.planning.config import ConfigNotFoundError, find_config, load_config
+    from workbench.planning.config import ConfigNotFoundError, load_config
     from workbench.planning.config import config_dir as default_dir
     from workbench.planning.setup import run_setup
 
-    target = Path(config_dir) if config_dir else None
+    if config_dir:
+        target = Path(config_dir)
+        try:
+            return load_config(target)
+        except ConfigNotFoundError:
+            resolve_robot_path(robot)  # an unknown robot fails here, naming the available ones
+            raise ConfigNotFoundError(
+                f"no planning configuration in {target} (no {target / 'planning.yaml'})",
+                hint=f"write one with: workbench setup {robot} -o {target}",
+            ) from None
     try:
-        return load_config(target if target is not None else robot)
+        return load_config(robot)
     except ConfigNotFoundError:
         pass
     resolve_robot_path(robot)  # an unknown robot fails here, naming the available ones
-    if target is None:
-        try:
-            find_config(robot)
-        except ConfigNotFoundError:
-            target = default_dir(robot)
+    target = default_dir(robot)
     print(f"no planning configuration for '{robot}': running setup first (writing {target}/)")
-    run_setup(robot, out_dir=target)
-    return load_config(target if target is not None else robot)
+    run_setup(robot)
+    return load_config(target)

@@ -154,6 +154,12 @@ def setup(
         )
     planner = planner_name(planner)
     resolve_robot_path(robot)
+    if output is not None and not dry_run:
+        from pathlib import Path
+
+        from workbench.planning.config import check_config_dir
+
+        check_config_dir(Path(output))
     config = run_setup(
         robot,
         out_dir=output,

@@ -32,6 +32,8 @@ def parse_positions(items: list[str]) -> dict[str, float]:
     Raises:
         ModelError: An item is not ``NAME=NUMBER``.
     """
+    import math
+
     from workbench.errors import ModelError
 
     values: dict[str, float] = {}
@@ -45,6 +47,11 @@ def parse_positions(items: list[str]) -> dict[str, float]:
             raise ModelError(
                 f"--q {item!r} is not JOINT=VALUE", hint="e.g. --q elbow_pitch_joint=0.5"
             ) from None
+        if not math.isfinite(values[name.strip()]):
+            raise ModelError(
+                f"--q {item!r}: {text.strip()} is not a finite number",
+                hint="give the joint position in rad, or in m for a prismatic joint",
+            )
     return values
 
 
@@ -84,7 +91,8 @@ def show(
         port: Meshcat port (default: the first free one from 7000).
 
     Raises:
-        ModelError: A bad size, port or joint name, or an unreadable description.
+        ModelError: A bad size, port or joint name, an unreadable description, or an
+            output that may not be written (a missing folder, someone else's file).
     """
     import tempfile
     from pathlib import Path
@@ -96,6 +104,12 @@ def show(
         raise ModelError(f"--width and --height must be positive, got {width} x {height}")
     if port is not None and not 0 < port < 65536:
         raise ModelError(f"--port must be in 1..65535, got {port}")
+    from workbench.output_files import check_output
+
+    if html:
+        check_output(html, "html-snapshot", option="--html", error=ModelError)
+    if png:
+        check_output(png, "png", option="--png", error=ModelError)
     from workbench.model import load_robot
     from workbench.viz import Viewer
 

@@ -116,14 +116,18 @@ def tree_lines(name: str, root: str, tree: KinematicTree) -> list[str]:
         link: sorted(joints, key=lambda j: j.name) for link, joints in tree.children.items()
     }
     lines.append(f"root Link: {root} has {len(children.get(root, []))} child(ren)")
-
-    def walk(link: str, level: int) -> None:
-        level += 2
-        for count, joint in enumerate(children.get(link, []), start=1):
-            lines.append("  " * level + f"child({count}):  {joint.child}")
-            walk(joint.child, level)
-
-    walk(root, 0)
+    # Depth first without recursion: a chain of thousands of links is a valid model.
+    stack = [(2, count, joint) for count, joint in enumerate(children.get(root, []), start=1)]
+    stack.reverse()
+    seen: set[str] = set()
+    while stack:
+        level, count, joint = stack.pop()
+        lines.append("  " * level + f"child({count}):  {joint.child}")
+        if joint.child in seen:
+            continue  # Drake refuses loops before this; never walk one forever
+        seen.add(joint.child)
+        below = list(enumerate(children.get(joint.child, []), start=1))
+        stack.extend((level + 2, index, child) for index, child in reversed(below))
     return lines
 
 

@@ -64,6 +64,7 @@ class RobotDescription:
     document: UrdfDocument | None = None
     packages: PackageResolver = field(default_factory=PackageResolver)
     _root_link: str | None = field(default=None, init=False, repr=False)
+    _guarded: bool = field(default=False, init=False, repr=False)
     _prepared: Any = field(default=None, init=False, repr=False)
 
     @classmethod

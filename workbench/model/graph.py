@@ -11,6 +11,7 @@ keeps its sign.
 from __future__ import annotations
 
 import os
+import re
 import subprocess
 from pathlib import Path
 
@@ -23,6 +24,7 @@ from workbench.model.urdf_xml import UrdfDocument, UrdfSyntaxError, parse_urdf_t
 from workbench.model.urdfdom import RosJoint, RosModel, cpp_double
 from workbench.model.urdfdom_reader import read_ros_model
 from workbench.optional import require_program
+from workbench.output_files import check_output, write_output
 
 FORMATS = ("pdf", "svg", "png")
 
@@ -85,16 +87,8 @@ def robot_graph(document: UrdfDocument) -> RobotGraph:
     graph.source = ros.graph_source()
     graph.robot_name = document.name
     assert ros.root is not None  # ros_tree returns printable trees only
-    order = [ros.root]
-    joints: list[RosJoint] = []
-
-    def walk(link: str) -> None:
-        for joint in ros.children.get(link, []):
-            order.append(joint.child)
-            joints.append(joint)
-            walk(joint.child)
-
-    walk(ros.root)
+    joints: list[RosJoint] = ros.joints_depth_first()
+    order = [ros.root] + [joint.child for joint in joints]
     for link in order:
         graph.add_node(pydot.Node(link, label=link, shape="box"))
     parent_joints = ros.parent_joints()
@@ -108,23 +102,68 @@ def robot_graph(document: UrdfDocument) -> RobotGraph:
     return graph
 
 
-def render_source(source: str, fmt: str) -> bytes:
+def render_source(source: str, fmt: str, gv_path: Path | None = None) -> bytes:
     """Run graphviz ``dot`` on ``.gv`` text and return the ``fmt`` (pdf, svg, png) bytes.
+
+    Args:
+        source: The ``.gv`` text.
+        fmt: ``pdf``, ``svg`` or ``png``.
+        gv_path: The ``.gv`` file the text was written to (named in errors).
 
     Raises:
         MissingDependencyError: graphviz is not installed.
-        ModelError: dot failed.
+        ModelError: dot failed or took longer than :data:`DOT_SECONDS`; the message names
+            the ``.gv`` file, its line and the link or joint there.
     """
     if fmt not in FORMATS:
         raise ModelError(f"unknown graph format '{fmt}'", hint="use " + ", ".join(FORMATS))
     dot = require_program("dot")
-    result = subprocess.run(
-        [dot, f"-T{fmt}"], input=source.encode(), capture_output=True, timeout=120, check=False
-    )
+    try:
+        result = subprocess.run(
+            [dot, f"-T{fmt}"],
+            input=source.encode(),
+            capture_output=True,
+            timeout=DOT_SECONDS,
+            check=False,
+        )
+    except subprocess.TimeoutExpired:
+        raise ModelError(
+            f"graphviz dot took more than {DOT_SECONDS} s",
+            path=gv_path,
+            hint="draw a smaller model",
+        ) from None
     if result.returncode != 0:
-        reason = result.stderr.decode(errors="replace").strip().splitlines()[:1] or ["no output"]
-        raise ModelError(f"graphviz dot failed: {reason[0]}")
+        raise dot_failure(result.stderr.decode(errors="replace"), source, gv_path)
     return result.stdout
+
+
+#: Longest a ``dot`` run may take, seconds.
+DOT_SECONDS = 120
+_LINE = re.compile(r"\bline (\d+)")
+_QUOTED = re.compile(r'\s*"((?:[^"\\]|\\.)*)"')
+
+
+def dot_failure(stderr: str, source: str, gv_path: Path | None = None) -> ModelError:
+    """dot's complaint as one line: the ``.gv`` file and line, and the link or joint there."""
+    lines = [line for line in stderr.strip().splitlines() if line.strip()]
+    reason = lines[0] if lines else "no output"
+    match = _LINE.search(stderr)
+    line = int(match.group(1)) if match else None
+    text = source.splitlines()
+    where = ""
+    if line is not None and 1 <= line <= len(text):
+        name = _QUOTED.match(text[line - 1])
+        if name is not None:
+            ellipses = text.index("node [shape=ellipse, color=blue, fontcolor=blue];")
+            boxes = {m.group(1) for t in text[2:ellipses] if (m := _QUOTED.match(t))}
+            kind = "link" if name.group(1) in boxes else "joint"
+            where = f" at {kind} '{name.group(1)}'"
+    return ModelError(
+        f"graphviz dot failed{where}: {reason}",
+        path=gv_path,
+        line=line if gv_path is not None else None,
+        hint="the .gv file is kept; fix that name in the model",
+    )
 
 
 def write_graph(
@@ -135,22 +174,27 @@ def write_graph(
 ) -> list[Path]:
     """Write the ``.gv`` file and, unless ``out_path`` is None, its rendering.
 
+    Neither folder is created, and an existing file is replaced only by one of its
+    kind (:mod:`workbench.output_files`).
+
     Returns:
         The files written, ``.gv`` first.
+
+    Raises:
+        ModelError: A missing folder, someone else's file, a failed write or a failed dot.
     """
-    gv_path = Path(gv_path)
+    gv_path = check_output(gv_path, "graphviz", error=ModelError)
     source = graph_source(document)
-    try:
-        gv_path.write_text(source, encoding="utf-8")
-        written = [gv_path]
-        if out_path is not None:
-            out_path = Path(out_path)
-            fmt = fmt or out_path.suffix.lstrip(".").lower() or "pdf"
-            data = render_source(source, fmt)
-            out_path.write_bytes(data)
-            written.append(out_path)
-    except OSError as error:
-        raise ModelError(f"cannot write the graph: {error.strerror}", path=error.filename) from None
+    if out_path is not None:
+        out_path = Path(out_path)
+        fmt = fmt or out_path.suffix.lstrip(".").lower() or "pdf"
+        if fmt not in FORMATS:
+            raise ModelError(f"unknown graph format '{fmt}'", hint="use " + ", ".join(FORMATS))
+        out_path = check_output(out_path, fmt, error=ModelError)
+    written = [write_output(gv_path, source, error=ModelError)]
+    if out_path is not None:
+        data = render_source(source, fmt or "pdf", gv_path)
+        written.append(write_output(out_path, data, error=ModelError))
     return written
 
 

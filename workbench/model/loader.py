@@ -12,6 +12,7 @@ from typing import Any
 from workbench.errors import ModelError
 from workbench.model.description import RobotDescription, describe_robot
 from workbench.model.description import prepared_urdf as prepared_urdf  # re-exported
+from workbench.model.drake_guard import ModelInputError, check_sdf_file, check_urdf_element
 from workbench.model.info import LinkInfo
 from workbench.model.robot import Robot, joint_info_from_plant
 from workbench.model.urdf_xml import UrdfDocument
@@ -22,6 +23,8 @@ class DrakeLoadError(ModelError):
 
 
 _LOG = logging.getLogger("workbench.model")
+#: Longest part of a Drake message kept in an error, characters.
+_LONGEST_MESSAGE = 500
 
 
 #: URDF tags for ROS's drivers that Drake ignores with a warning; not worth one when loading
@@ -83,6 +86,8 @@ def _drake_error(
     match = re.match(r"^(?:.*?):(\d+): (?:error: )?(.*)$", message)
     if match:
         line_number, message = int(match.group(1)), match.group(2)
+    if len(message) > _LONGEST_MESSAGE:  # Drake repeats names from the file, however long
+        message = message[: _LONGEST_MESSAGE - 3] + "..."
     element = document.element_at(line_number) if document is not None else "model"
     where = "" if element == "model" else f"{element}: "
     return DrakeLoadError(
@@ -136,6 +141,7 @@ def load_robot(
     description = describe_robot(source, mappings)
     path = description.path
     document = description.document
+    _guard(description)
     if document is not None:
         root_link = description.root_link()
         text = description.prepared_text(model_name)
@@ -162,7 +168,7 @@ def load_robot(
                 instances = parser.AddModelsFromString(text, "urdf")
             else:
                 instances = parser.AddModels(str(path))  # type: ignore[arg-type]
-    except RuntimeError as error:
+    except (RuntimeError, ValueError) as error:  # pydrake raises ValueError for bad vectors
         raise _drake_error(error, path, document) from None
     if not instances:
         raise ModelError("the file defines no model", path=path)
@@ -232,6 +238,23 @@ def load_robot(
         except RuntimeError as error:
             raise _drake_error(error, path, document) from None
     return robot
+
+
+def _guard(description: RobotDescription) -> None:
+    """Check names and numbers Drake would abort or crash on (once per description)."""
+    if description._guarded:
+        return
+    try:
+        if description.document is not None:
+            check_urdf_element(description.document.root, description.path)
+        else:
+            check_sdf_file(description.path)
+    except ModelInputError as error:
+        if not description.expanded:
+            raise
+        # Lines of xacro's output are not lines of the file the user edits.
+        raise ModelInputError(error.message, path=error.path, hint=error.hint) from None
+    description._guarded = True
 
 
 def as_robot(source: str | os.PathLike[str] | RobotDescription | Robot) -> Robot:

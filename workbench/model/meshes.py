@@ -14,6 +14,8 @@ from pathlib import Path
 from typing import Any
 
 from workbench.errors import ModelError
+from workbench.model.limits import MAX_MESH_BYTES, check_input_file
+from workbench.paths import exists
 
 #: Formats Drake's parser and Meshcat read directly.
 NATIVE_FORMATS = (".obj", ".gltf", ".glb", ".vtk")
@@ -33,7 +35,8 @@ def cache_dir() -> Path:
 
 
 def check_mesh(path: Path, *, where: Path | None = None, line: int | None = None) -> None:
-    """Raise :class:`MeshError` if ``path`` is missing or in an unsupported format."""
+    """Raise :class:`MeshError` if ``path`` is missing, in an unsupported format, not a
+    regular file, or bigger than :data:`~workbench.model.limits.MAX_MESH_BYTES`."""
     suffix = path.suffix.lower()
     if suffix not in NATIVE_FORMATS + CONVERTED_FORMATS:
         raise MeshError(
@@ -42,13 +45,18 @@ def check_mesh(path: Path, *, where: Path | None = None, line: int | None = None
             line=line,
             hint="use .obj, .gltf, .stl, .dae or .ply",
         )
-    if not path.is_file():
+    if not exists(path):
         raise MeshError(
             f"mesh file not found: {path}",
             path=where,
             line=line,
             hint="check the filename and the package:// path",
         )
+    try:
+        check_input_file(path, "mesh", MAX_MESH_BYTES, where=where, line=line)
+    except ModelError as error:
+        message = error.message if where is not None else f"mesh {path}: {error.message}"
+        raise MeshError(message, path=where, line=line, hint=error.hint) from None
 
 
 def prepare_mesh(path: Path, *, where: Path | None = None, line: int | None = None) -> Path:

@@ -209,11 +209,25 @@ class Robot:
             if name not in names:
                 raise self._unknown_joint(name, names)
             q[names.index(name)] = float(value)
+        self._check_finite(q)
         return q
+
+    def _check_finite(self, q: np.ndarray) -> None:
+        """Drake aborts the process on a NaN or infinite position: refuse it here."""
+        bad = np.flatnonzero(~np.isfinite(q))
+        if bad.size:
+            names = self.joint_names
+            name = names[bad[0]] if q.size == len(names) else f"#{bad[0]}"
+            raise ModelError(
+                f"robot '{self.name}': joint '{name}' would be set to {q[bad[0]]}, "
+                "which is not a finite number",
+                hint="give every joint position as a finite number (rad or m)",
+            )
 
     def set_positions(self, context, q: Sequence[float] | np.ndarray) -> None:
         """Write the movable-joint positions ``q`` into a plant context."""
         values = np.asarray(q, dtype=float).ravel()
+        self._check_finite(values)
         plant_joints = self._plant_joints()
         plant = self.plant
         if values.size == plant.num_positions() and values.size != len(plant_joints):

@@ -113,6 +113,18 @@ def inertia_findings(document: UrdfDocument, tree: KinematicTree) -> list[Findin
             )
             continue
         line = inertial.inertia_line or inertial.line
+        if not np.all(np.isfinite(inertial.inertia)):
+            findings.append(
+                Finding(
+                    "error",
+                    "inertia-not-finite",
+                    what,
+                    "inertia holds a value that is not a finite number",
+                    "use the inertia of the link's shape about its centre of mass, in kg m^2",
+                    line,
+                )
+            )
+            continue
         moments = np.linalg.eigvalsh(inertial.inertia)
         scale = max(float(np.abs(moments).max()), 1e-300)
         if np.allclose(inertial.inertia, 0.0):

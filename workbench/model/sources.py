@@ -10,7 +10,7 @@ from pathlib import Path
 
 from workbench.errors import ModelError
 from workbench.model.robot_library import INSTALL_HINT, library_robot, library_robots, library_root
-from workbench.paths import urdf_dir
+from workbench.paths import is_dir, is_file, urdf_dir
 
 #: Suffixes tried, in order, for a bare name such as ``robot_arm``.
 NAME_SUFFIXES = (".urdf", ".urdf.xacro", ".xacro", ".sdf")
@@ -52,9 +52,9 @@ def resolve_robot_path(source: str | os.PathLike[str]) -> Path:
     """
     text = os.fspath(source)
     path = Path(text).expanduser()
-    if path.is_file():
+    if is_file(path):
         return path.resolve()
-    if path.is_dir():
+    if is_dir(path):
         raise ModelError(
             "is a directory, not a robot description",
             path=path,
@@ -67,7 +67,7 @@ def resolve_robot_path(source: str | os.PathLike[str]) -> Path:
         for suffix in NAME_SUFFIXES:
             candidate = directory / f"{text}{suffix}"
             tried.append(candidate)
-            if candidate.is_file():
+            if is_file(candidate):
                 return candidate.resolve()
         described = library_robot(text)
         if described is not None:
@@ -107,11 +107,17 @@ def available_robots() -> list[str]:
 def expand_xacro(path: Path, mappings: dict[str, str] | None = None) -> str:
     """Run xacro on ``path`` and return the URDF text.
 
+    Expressions, includes, ``load_yaml`` and substitutions run in workbench's
+    sandbox (:mod:`workbench.model.xacro_sandbox`): the file can compute, read files
+    of its own package, and nothing else, within the bounds of
+    :mod:`workbench.model.limits`.
+
     Raises:
-        XacroError: xacro failed; the message carries xacro's own reason.
+        XacroError: xacro failed or the file reached past the sandbox; the message
+            carries the reason and names the (included) file it happened in.
     """
     try:
-        import xacro
+        from workbench.model import xacro_sandbox
     except ImportError as error:  # pragma: no cover - xacro is a dependency
         raise XacroError(
             f"xacro is not installed ({error})", path=path, hint="pip install xacro"
@@ -119,13 +125,32 @@ def expand_xacro(path: Path, mappings: dict[str, str] | None = None) -> str:
     captured = io.StringIO()
     try:
         with contextlib.redirect_stderr(captured), contextlib.redirect_stdout(captured):
-            document = xacro.process_file(str(path), mappings=dict(mappings or {}))
+            return xacro_sandbox.expand(path, mappings)
     except Exception as error:  # xacro raises XacroException, NameError, ExpatError ...
-        reason = " ".join(str(error).split()) or type(error).__name__
-        raise XacroError(
-            f"xacro failed: {reason}", path=path, hint="fix the xacro source and run it again"
-        ) from None
-    return document.toprettyxml(indent="  ")
+        where = getattr(error, "workbench_file", None) or path
+        message, hint = _xacro_reason(error)
+        raise XacroError(f"xacro failed: {message}", path=where, hint=hint) from None
+
+
+def _xacro_reason(error: Exception) -> tuple[str, str]:
+    """One line saying why xacro failed, and what to do."""
+    hint = "fix the xacro source and run it again"
+    cause = getattr(error, "exc", None)
+    if isinstance(error, ModelError):
+        return error.message, error.hint or hint
+    if isinstance(cause, ModelError):
+        suffix = _shortened(" ".join(str(getattr(error, "suffix", "") or "").split()))
+        return " ".join(f"{cause.message} {suffix}".split()), cause.hint or hint
+    if isinstance(error, RecursionError) or isinstance(cause, RecursionError):
+        return "the XML or its macros are nested too deeply (a macro that calls itself?)", hint
+    if isinstance(error, MemoryError) or isinstance(cause, MemoryError):
+        return "out of memory", hint
+    return _shortened(" ".join(str(error).split())) or type(error).__name__, hint
+
+
+def _shortened(text: str, length: int = 400) -> str:
+    """xacro repeats the whole expression in its messages; keep a readable start of it."""
+    return text if len(text) <= length else text[: length - 5] + " ...'"
 
 
 def read_description(path: Path, mappings: dict[str, str] | None = None) -> DescriptionText:

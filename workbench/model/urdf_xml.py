@@ -23,6 +23,7 @@ from workbench import spatial
 from workbench.errors import ModelError
 from workbench.model.findings import Finding
 from workbench.model.info import JointInfo, LinkInfo
+from workbench.model.limits import shown_name, xml_error_text
 
 JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
 
@@ -186,7 +187,13 @@ class _Reader:
     def positive(self, element, what: str, values: dict[str, float], zero_ok: bool = False):
         """Sizes Drake accepts (it aborts the process on others): finite and above zero."""
         for key, value in values.items():
-            if not math.isfinite(value) or value < 0 or (value == 0 and not zero_ok):
+            if not math.isfinite(value):
+                self.fail(
+                    f"{what}: {key} {value:g} is not a finite number",
+                    element,
+                    hint="give the shape's real size in metres",
+                )
+            if value < 0 or (value == 0 and not zero_ok):
                 bound = "zero or more" if zero_ok else "more than zero"
                 self.fail(
                     f"{what}: {key} {value:g} must be {bound}",
@@ -216,6 +223,12 @@ class _Reader:
             )
         if any(math.isnan(value) for value in values):
             self.fail(f'{what}: {attribute}="{text}" contains NaN', element)
+        if self.strict and any(math.isinf(value) for value in values):
+            self.fail(
+                f'{what}: {attribute}="{text}" is not a finite number',
+                element,
+                hint="write finite numbers; ROS cannot read inf either",
+            )
         return values
 
     def origin(self, parent, what: str) -> tuple[np.ndarray, np.ndarray]:
@@ -262,7 +275,13 @@ class _Reader:
             if not filename:
                 self.fail(f"{where} has no 'filename' attribute", child)
             scale = self.floats(child, "scale", 3, where, default=(1.0, 1.0, 1.0))
-            if any(not math.isfinite(value) or abs(value) < 1e-8 for value in scale):
+            if not all(math.isfinite(value) for value in scale):
+                self.fail(
+                    f'{where}: scale="{child.get("scale")}" is not a finite number',
+                    child,
+                    hint="scale every axis by a finite, non-zero factor",
+                )
+            if any(abs(value) < 1e-8 for value in scale):
                 self.fail(
                     f'{where}: scale="{child.get("scale")}" has a zero component',
                     child,
@@ -314,7 +333,7 @@ class _Reader:
         name = element.get("name")
         if not name:
             self.fail("<link> has no name", element, hint='add name="..."')
-        what = f"link '{name}'"
+        what = f"link '{shown_name(name, 80)}'"
         link = Link(name, element.sourceline)
         self.link_label = what
         try:
@@ -338,7 +357,7 @@ class _Reader:
         name = element.get("name")
         if not name:
             self.fail("<joint> has no name", element, hint='add name="..."')
-        what = f"joint '{name}'"
+        what = f"joint '{shown_name(name, 80)}'"
         kind = element.get("type")
         if kind not in JOINT_TYPES:
             self.fail(
@@ -512,7 +531,7 @@ def parse_urdf_text(
     try:
         root = _parse_xml(*_lenient_prolog(_keep_attribute_whitespace(data)), parser)
     except etree.XMLSyntaxError as error:
-        message = re.sub(r",? line \d+, column \d+", "", str(error.msg or error)).strip()
+        message = xml_error_text(str(error.msg or error))
         raise UrdfSyntaxError(
             f"not well-formed XML: {message}",
             path=path,
@@ -534,11 +553,11 @@ def parse_urdf_text(
     for element in root.iterchildren("material"):
         material_name = element.get("name") or ""
         texture = element.find("texture")
-        reader.link_label = f"material '{material_name}'"
+        reader.link_label = f"material '{shown_name(material_name, 80)}'"
         try:
             if not material_name:
                 reader.fail("<material> has no name", element, hint='add name="..."')
-            rgba = reader.rgba(element, f"material '{material_name}'")
+            rgba = reader.rgba(element, f"material '{shown_name(material_name, 80)}'")
         except _Dropped:
             if not material_name:
                 continue

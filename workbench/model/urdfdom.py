@@ -141,10 +141,11 @@ class RosModel:
         """
         if not self.printable or self.root is None:
             raise ValueError("urdfdom has no tree for this file")
-        lines = ["digraph G {", "node [shape=box];", f'"{self.root}" [label="{self.root}"];']
+        root = dot_quoted(self.root)
+        lines = ["digraph G {", "node [shape=box];", f'"{root}" [label="{root}"];']
         walk = list(self._walk(self.root, 1))
         parent_joints = self.parent_joints()
-        lines += [f'"{joint.child}" [label="{joint.child}"];' for _, _, joint in walk]
+        lines += [f'"{dot_quoted(j.child)}" [label="{dot_quoted(j.child)}"];' for _, _, j in walk]
         lines.append("node [shape=ellipse, color=blue, fontcolor=blue];")
         for _, _, joint in walk:
             # urdf_to_graphviz labels the edge with the child's parent joint: for a link
@@ -153,10 +154,15 @@ class RosModel:
             xyz = " ".join(cpp_double(value) for value in shown.xyz)
             rpy = " ".join(cpp_double(value) for value in shown.rpy)
             label = f"xyz: {xyz} \\nrpy: {rpy}"
-            lines.append(f'"{joint.parent}" -> "{shown.name}" [label="{label}"]')
-            lines.append(f'"{shown.name}" -> "{joint.child}"')
+            parent, name, child = (dot_quoted(n) for n in (joint.parent, shown.name, joint.child))
+            lines.append(f'"{parent}" -> "{name}" [label="{label}"]')
+            lines.append(f'"{name}" -> "{child}"')
         lines.append("}")
         return "\n".join(lines) + "\n"
+
+    def joints_depth_first(self) -> list[RosJoint]:
+        """The joints below the root, depth first, children in urdfdom's order."""
+        return [joint for _, _, joint in self._walk(self.root, 1)] if self.root else []
 
     def parent_joints(self) -> dict[str, RosJoint]:
         """Link -> the joint urdfdom records as its parent: of several, the last by name."""
@@ -175,6 +181,22 @@ class RosModel:
             level, index, joint = stack.pop()
             yield level, index, joint
             stack += below(joint.child, level + 1)
+
+
+def dot_quoted(name: str) -> str:
+    """``name`` for the inside of a double-quoted graphviz string.
+
+    urdf_to_graphviz writes names raw, so a link called ``x" shape=none image="/etc/passwd``
+    would add attributes to the graph; here quotes and backslashes are escaped and line
+    breaks written as ``\\n``. Ordinary names are unchanged, so the ``.gv`` stays ROS's.
+    """
+    return (
+        name.replace("\\", "\\\\")
+        .replace('"', '\\"')
+        .replace("\r\n", "\\n")
+        .replace("\n", "\\n")
+        .replace("\r", "\\n")
+    )
 
 
 def cpp_double(value: float) -> str:

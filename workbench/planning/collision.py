@@ -25,6 +25,7 @@ import numpy as np
 
 from workbench import spatial
 from workbench.errors import ModelError
+from workbench.planning.errors import SceneError
 from workbench.planning.scene import PlanningScene, SceneObject
 
 
@@ -68,13 +69,19 @@ def add_scene_to_plant(plant, scene: PlanningScene) -> None:
     from pydrake.geometry import ProximityProperties
 
     for obj in scene:
-        plant.RegisterCollisionGeometry(
-            plant.world_body(),
-            spatial.as_rigid_transform(obj.X_WO),
-            drake_shape(obj),
-            f"scene::{obj.name}",
-            ProximityProperties(),
-        )
+        try:
+            plant.RegisterCollisionGeometry(
+                plant.world_body(),
+                spatial.as_rigid_transform(obj.X_WO),
+                drake_shape(obj),
+                f"scene::{obj.name}",
+                ProximityProperties(),
+            )
+        except (RuntimeError, ValueError) as error:
+            reason = " ".join(str(error).split())
+            raise SceneError(
+                f"object '{obj.name}': Drake cannot use it: {reason}", path=scene.source
+            ) from None
 
 
 class CollisionWorld:

@@ -36,10 +36,12 @@ from typing import Any
 import yaml
 
 from workbench.errors import PlanningError
-from workbench.paths import planning_dir, urdf_dir
-from workbench.planning.srdf import Srdf, SrdfError, read_srdf, write_srdf
+from workbench.paths import is_dir, is_file, planning_dir, urdf_dir
+from workbench.planning.srdf import Srdf, SrdfError, read_srdf
 
 CONFIG_FILE = "planning.yaml"
+#: The first line of every planning.yaml the setup writes (how workbench knows it is its own).
+CONFIG_HEADER = "# Planning configuration written by `workbench setup`; edit freely.\n"
 #: Seconds a joint takes to reach its velocity limit under the default acceleration limit.
 DEFAULT_ACCELERATION_TIME = 0.5
 #: Velocity limit (rad/s or m/s) for joints whose URDF gives none.
@@ -48,6 +50,8 @@ DEFAULT_PLANNER = "RRTConnect"
 DEFAULT_EDGE_RESOLUTION = 0.01
 DEFAULT_PLANNING_TIME = 1.0
 CONTROLLER_TYPES = ("inverse_dynamics", "pid")
+#: Largest planning.yaml or SRDF read, bytes.
+MAX_CONFIG_BYTES = 16 * 1024 * 1024
 DEFAULT_GAINS = {"kp": 100.0, "ki": 0.0, "kd": 20.0}
 _ROBOT_SUFFIXES = (".urdf", ".xacro", ".urdf.xacro", ".sdf")
 _KEYS = {
@@ -159,24 +163,78 @@ class PlanningConfig:
             data["author"] = dict(self.author)
         return data
 
-    def save(self, out_dir: str | os.PathLike[str] | None = None) -> Path:
+    def save(
+        self, out_dir: str | os.PathLike[str] | None = None, *, create_parents: bool = False
+    ) -> Path:
         """Write ``<robot>.srdf`` and ``planning.yaml`` into ``out_dir`` (default: ``self.path``).
+
+        The folder itself is created when missing, its parents only with
+        ``create_parents`` (workbench's own ``planning/``); files already there are
+        replaced only when ``workbench setup`` wrote them.
+
+        Args:
+            out_dir: The configuration folder.
+            create_parents: Also create missing parent folders.
 
         Returns:
             The directory written.
+
+        Raises:
+            ConfigError: The parent folder is missing, the robot's name cannot name a file,
+                a file there is someone else's, or writing failed.
         """
+        from workbench.model.limits import file_stem_problem
+        from workbench.output_files import check_output, write_output
+
         target = Path(out_dir) if out_dir is not None else self.path
         if target is None:
-            target = config_dir(self.robot_name)
-        target.mkdir(parents=True, exist_ok=True)
+            target, create_parents = config_dir(self.robot_name), True
+        problem = file_stem_problem(self.srdf.name)
+        if problem is not None:
+            raise ConfigError(
+                f"the robot's name '{self.srdf.name[:40]}' cannot name the SRDF file: it {problem}",
+                hint="rename the robot in its description",
+            )
+        check_config_dir(target, create_parents=create_parents)
+        try:
+            target.mkdir(parents=create_parents, exist_ok=True)
+        except OSError as error:
+            raise ConfigError(
+                f"cannot create the configuration folder: {error.strerror}", path=target
+            ) from None
+        srdf_path = check_output(target / f"{self.srdf.name}.srdf", "srdf", error=ConfigError)
+        yaml_path = check_output(target / CONFIG_FILE, "planning-yaml", error=ConfigError)
         self.path = target
-        srdf_path = write_srdf(self.srdf, target / f"{self.srdf.name}.srdf")
+        write_output(srdf_path, self.srdf.to_xml(), error=ConfigError)
         self.srdf.path = srdf_path
         text = yaml.safe_dump(self.to_dict(), sort_keys=False, default_flow_style=None, width=100)
-        (target / CONFIG_FILE).write_text(
-            "# Planning configuration written by `workbench setup`; edit freely.\n" + text
-        )
+        write_output(yaml_path, CONFIG_HEADER + text, error=ConfigError)
         return target
+
+
+def check_config_dir(target: Path, *, create_parents: bool = False) -> None:
+    """Check, before any work, that a configuration may be written into ``target``.
+
+    Raises:
+        ConfigError: Its parent folder is missing (unless ``create_parents``), it is not
+            a folder, or its ``planning.yaml`` was not written by ``workbench setup``.
+    """
+    from workbench.output_files import check_output
+
+    if not create_parents and not target.parent.is_dir():
+        raise ConfigError(
+            f"cannot write the configuration: the folder {target.parent} does not exist",
+            path=target,
+            hint="create it first; workbench creates only the configuration folder itself",
+        )
+    if target.exists() and not target.is_dir():
+        raise ConfigError(
+            "cannot write the configuration: this is not a folder",
+            path=target,
+            hint="give the folder the configuration goes into",
+        )
+    if target.is_dir():
+        check_output(target / CONFIG_FILE, "planning-yaml", error=ConfigError)
 
 
 def config_dir(robot_name: str | os.PathLike[str]) -> Path:
@@ -202,12 +260,12 @@ def find_config(source: str | os.PathLike[str]) -> Path:
         ConfigNotFoundError: None exists.
     """
     path = Path(source)
-    if path.is_file() and path.suffix in (".yaml", ".yml"):
+    if is_file(path) and path.suffix in (".yaml", ".yml"):
         return path
-    if path.is_dir() and (path / CONFIG_FILE).is_file():
+    if is_dir(path) and is_file(path / CONFIG_FILE):
         return path / CONFIG_FILE
     candidate = config_dir(source) / CONFIG_FILE
-    if candidate.is_file():
+    if is_file(candidate):
         return candidate
     raise ConfigNotFoundError(
         f"no planning configuration for '{source}' (looked for {candidate})",
@@ -230,10 +288,15 @@ def load_config(source: str | os.PathLike[str]) -> PlanningConfig:
     """
     file = find_config(source)
     try:
-        data = yaml.safe_load(file.read_text())
+        data = yaml.safe_load(_read_text(file))
     except yaml.MarkedYAMLError as exc:
         line = exc.problem_mark.line + 1 if exc.problem_mark else None
-        raise ConfigError(f"malformed YAML: {exc.problem}", path=file, line=line) from None
+        problem = " ".join(str(exc.problem or exc).split())
+        raise ConfigError(f"malformed YAML: {problem}", path=file, line=line) from None
+    except yaml.YAMLError as exc:
+        raise ConfigError(f"malformed YAML: {' '.join(str(exc).split())}", path=file) from None
+    except RecursionError:
+        raise ConfigError("the YAML is nested too deeply", path=file) from None
     if not isinstance(data, dict):
         raise ConfigError("expected a mapping of settings", path=file)
     unknown = sorted(set(data) - _KEYS)
@@ -278,6 +341,23 @@ def load_config(source: str | os.PathLike[str]) -> PlanningConfig:
         author=dict(data.get("author") or {}),
         path=base,
     )
+
+
+def _read_text(file: Path) -> str:
+    """A configuration file's text: a regular UTF-8 file of at most a few megabytes."""
+    from workbench.errors import ModelError
+    from workbench.model.limits import check_input_file
+
+    try:
+        return check_input_file(file, "planning configuration", MAX_CONFIG_BYTES).read_text(
+            encoding="utf-8"
+        )
+    except ModelError as error:
+        raise ConfigError(error.message, path=file, hint=error.hint) from None
+    except UnicodeDecodeError:
+        raise ConfigError("the file is not UTF-8 text", path=file) from None
+    except OSError as error:
+        raise ConfigError(f"cannot read the file: {error.strerror}", path=file) from None
 
 
 def default_joint_limits(joints: list[Any]) -> dict[str, dict[str, float]]:
@@ -334,7 +414,7 @@ def _resolve_robot(value: str, base: Path, file: Path) -> Path:
     candidates.append(base / value)
     candidates.append(Path(value).expanduser())
     for candidate in candidates:
-        if candidate.is_file():
+        if is_file(candidate):
             return candidate.resolve()
     raise ConfigError(
         f"robot '{value}' not found (tried {', '.join(str(c) for c in candidates)})",
@@ -372,6 +452,6 @@ def _fraction(data: dict[str, Any], key: str, file: Path) -> float:
 
 def _positive(data: dict[str, Any], key: str, default: float, file: Path) -> float:
     value = data.get(key, default)
-    if not isinstance(value, (int, float)) or value <= 0:
+    if not isinstance(value, (int, float)) or not (math.isfinite(value) and value > 0):
         raise ConfigError(f"{key} must be a positive number, got {value!r}", path=file)
     return float(value)

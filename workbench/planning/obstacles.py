@@ -15,6 +15,8 @@ from workbench.planning.sphere_cover import hull_vertices
 from workbench.spatial import matrix_from_rigid_transform
 
 _transform = matrix_from_rigid_transform
+#: Point-obstacle pairs one distance query holds in memory at once.
+_CHUNK = 1_000_000
 
 
 class ObstacleSet:
@@ -67,7 +69,19 @@ class ObstacleSet:
         self._cyl_off = np.einsum("kj,kji->ki", self.cyl_p, self.cyl_R)
 
     def distance(self, points: np.ndarray) -> np.ndarray:
-        """Distance (M,) from points (M, 3) to the nearest obstacle, m (0 inside one)."""
+        """Distance (M,) from points (M, 3) to the nearest obstacle, m (0 inside one).
+
+        Points go through in chunks, so memory stays near ``_CHUNK`` values however many
+        obstacles the scene has.
+        """
+        count = max(1, len(self.sphere_r) + len(self.box_h) + len(self.cyl_r))
+        step = max(1, _CHUNK // count)
+        if len(points) <= step:
+            return self._distance(points)
+        parts = [self._distance(points[i : i + step]) for i in range(0, len(points), step)]
+        return np.concatenate(parts)
+
+    def _distance(self, points: np.ndarray) -> np.ndarray:
         best = np.full(len(points), np.inf)
         if len(self.sphere_r):
             d = np.linalg.norm(points[:, None, :] - self.sphere_c, axis=-1) - self.sphere_r

@@ -10,12 +10,15 @@ CSV: one row per sample, columns ``t``, then ``q_<joint>``, ``qd_<joint>``, ``qd
 from __future__ import annotations
 
 import csv
+import io
 import json
 import os
 from pathlib import Path
 
 import numpy as np
 
+from workbench.errors import PlanningError
+from workbench.output_files import check_output, write_output
 from workbench.planning.pipeline import PlanResult
 from workbench.planning.timing import TimedTrajectory
 
@@ -39,30 +42,33 @@ def trajectory_samples(trajectory: TimedTrajectory, dt: float = OUTPUT_DT) -> di
 def write_json(
     trajectory: TimedTrajectory, path: str | os.PathLike[str], dt: float = OUTPUT_DT
 ) -> Path:
-    """Write the trajectory as JSON; returns the path."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(json.dumps(trajectory_samples(trajectory, dt)))
-    return path
+    """Write the trajectory as JSON; returns the path.
+
+    Raises:
+        PlanningError: The folder is missing, the file is someone else's, or the write failed.
+    """
+    path = check_output(path, "trajectory-json", error=PlanningError)
+    return write_output(path, json.dumps(trajectory_samples(trajectory, dt)), error=PlanningError)
 
 
 def write_csv(
     trajectory: TimedTrajectory, path: str | os.PathLike[str], dt: float = OUTPUT_DT
 ) -> Path:
-    """Write the trajectory as CSV (see the module docstring); returns the path."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    """Write the trajectory as CSV (see the module docstring); returns the path.
+
+    Raises:
+        PlanningError: The folder is missing, the file is someone else's, or the write failed.
+    """
+    path = check_output(path, "trajectory-csv", error=PlanningError)
     data = trajectory_samples(trajectory, dt)
     names = data["joint_names"]
     header = ["t"] + [f"{kind}_{n}" for kind in ("q", "qd", "qdd") for n in names]
-    with path.open("w", newline="") as handle:
-        writer = csv.writer(handle)
-        writer.writerow(header)
-        for i, t in enumerate(data["t"]):
-            writer.writerow(
-                [f"{t:.6f}"] + [f"{v:.9g}" for k in ("q", "qd", "qdd") for v in data[k][i]]
-            )
-    return path
+    text = io.StringIO(newline="")
+    writer = csv.writer(text)
+    writer.writerow(header)
+    for i, t in enumerate(data["t"]):
+        writer.writerow([f"{t:.6f}"] + [f"{v:.9g}" for k in ("q", "qd", "qdd") for v in data[k][i]])
+    return write_output(path, text.getvalue(), error=PlanningError)
 
 
 def plot_png(
@@ -71,14 +77,17 @@ def plot_png(
     lower: np.ndarray | None = None,
     upper: np.ndarray | None = None,
 ) -> Path:
-    """Plot position, velocity and acceleration per joint with dashed limit lines, as PNG."""
+    """Plot position, velocity and acceleration per joint with dashed limit lines, as PNG.
+
+    Raises:
+        PlanningError: The folder is missing, the file is someone else's, or the write failed.
+    """
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    path = check_output(path, "png", error=PlanningError)
     t = trajectory.times(OUTPUT_DT / 2)
     q, qd, qdd = trajectory.sample(t)
     names = trajectory.joint_names
@@ -106,9 +115,10 @@ def plot_png(
     axes[0].set_title("trajectory against its limits (dashed)")
     axes[-1].set_xlabel("time (s)")
     fig.tight_layout()
-    fig.savefig(path, dpi=100)
+    image = io.BytesIO()
+    fig.savefig(image, dpi=100, format="png")
     plt.close(fig)
-    return path
+    return write_output(path, image.getvalue(), error=PlanningError)
 
 
 def summary_rows(result: PlanResult) -> list[tuple[str, str]]:

@@ -37,12 +37,21 @@ from typing import Any
 import numpy as np
 import yaml
 
+from workbench.errors import ModelError
+from workbench.paths import is_file
 from workbench.planning.errors import SceneError
 from workbench.spatial import Box, Cylinder, Mesh, Shape, Sphere, matrix_from_rpy, pose_matrix
 from workbench.spatial.shapes import SHAPE_FIELDS
 
 #: The object types a scene may hold and the size fields each needs.
 SIZE_FIELDS: dict[str, tuple[str, ...]] = SHAPE_FIELDS
+#: Most objects in one scene: each is checked in every planning step, and setting up the
+#: planner's distance table takes about 0.05 s per object on a 2-core machine.
+MAX_SCENE_OBJECTS = 500
+#: Largest scene file, bytes.
+MAX_SCENE_BYTES = 16 * 1024 * 1024
+#: Mesh formats a scene takes: what Drake builds a convex hull from.
+SCENE_MESH_FORMATS = (".obj", ".gltf", ".vtk")
 
 
 def rpy_to_matrix(rpy: np.ndarray) -> np.ndarray:
@@ -134,7 +143,17 @@ class PlanningScene:
         return [obj.name for obj in self.objects]
 
     def add(self, obj: SceneObject) -> SceneObject:
-        """Add an object after validating its type, sizes and name."""
+        """Add an object after validating its type, sizes and name.
+
+        Raises:
+            SceneError: A bad object, a name already used, or more than
+                :data:`MAX_SCENE_OBJECTS` objects.
+        """
+        if len(self.objects) >= MAX_SCENE_OBJECTS:
+            raise SceneError(
+                f"a scene holds at most {MAX_SCENE_OBJECTS} objects",
+                hint="merge obstacles into larger boxes or meshes; see 'Limits on input' in the README",
+            )
         _validate(obj)
         if obj.name in self.names():
             raise SceneError(
@@ -206,15 +225,43 @@ class PlanningScene:
 
 
 def _vec(value, n: int = 3) -> np.ndarray:
-    array = np.asarray(value, dtype=float).reshape(-1)
-    if array.shape != (n,):
-        raise ValueError(f"expected {n} numbers, got {len(array)}")
-    return array
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    if not isinstance(value, list | tuple):
+        raise ValueError(f"expected a list of {n} numbers, got {_shown(value)}")
+    if len(value) != n:
+        raise ValueError(f"expected {n} numbers, got {len(value)}")
+    if not all(isinstance(v, int | float | np.number) and not isinstance(v, bool) for v in value):
+        raise ValueError(f"expected {n} numbers, got {_shown(value)}")
+    return np.array(value, dtype=float)
+
+
+def _number(value: Any, what: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float | np.number):
+        raise ValueError(f"{what} must be a number, got {_shown(value)}")
+    return float(value)
+
+
+def _shown(value: Any) -> str:
+    text = (
+        repr(value)
+        if isinstance(value, str | int | float | bool) or value is None
+        else type(value).__name__
+    )
+    return text if len(text) <= 40 else text[:37] + "..."
 
 
 def _validate(obj: SceneObject) -> None:
+    from workbench.model.limits import name_problem, shown_name
+
     if not obj.name or not isinstance(obj.name, str):
         raise SceneError("a scene object needs a non-empty 'name'")
+    problem = name_problem(obj.name)
+    if problem is not None:
+        raise SceneError(
+            f"object name '{shown_name(obj.name)}' {problem}",
+            hint="give it a short name of printable characters",
+        )
     if obj.type not in SIZE_FIELDS:
         raise SceneError(
             f"object '{obj.name}' has unknown type '{obj.type}'",
@@ -227,10 +274,11 @@ def _validate(obj: SceneObject) -> None:
     if obj.type == "cylinder" and not (math.isfinite(obj.length) and obj.length > 0):
         raise SceneError(f"cylinder '{obj.name}' needs a positive length, got {obj.length}")
     if obj.type == "mesh":
-        if obj.filename is None or not Path(obj.filename).is_file():
+        if obj.filename is None or not is_file(obj.filename):
             raise SceneError(f"mesh '{obj.name}': file '{obj.filename}' not found")
-        if not obj.scale > 0:
+        if not (math.isfinite(obj.scale) and obj.scale > 0):
             raise SceneError(f"mesh '{obj.name}' needs a positive scale, got {obj.scale}")
+        check_scene_mesh(obj.name, Path(obj.filename))
     if not (np.all(np.isfinite(obj.xyz)) and np.all(np.isfinite(obj.rpy))):
         raise SceneError(f"object '{obj.name}' has a non-finite pose")
 
@@ -242,16 +290,20 @@ def load_scene(path: str | os.PathLike[str]) -> PlanningScene:
         SceneError: naming the file and line of the first bad object.
     """
     path = Path(path)
-    if not path.is_file():
+    if not is_file(path):
         raise SceneError(f"scene file '{path}' not found", hint="give a path to a .yaml scene")
+    text = _read_text(path)
     try:
-        data = yaml.load(path.read_text(), Loader=_LineLoader)  # noqa: S506 (SafeLoader subclass)
+        data = yaml.load(text, Loader=_LineLoader)  # noqa: S506 (SafeLoader subclass)
+    except RecursionError:
+        raise SceneError(
+            "the YAML is nested too deeply", path=path, hint="a scene is a list of objects"
+        ) from None
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         line = mark.line + 1 if mark is not None else None
-        raise SceneError(
-            f"not valid YAML: {getattr(exc, 'problem', exc)}", path=path, line=line
-        ) from None
+        problem = " ".join(str(getattr(exc, "problem", None) or exc).split())
+        raise SceneError(f"not valid YAML: {problem}", path=path, line=line) from None
     if data is None:
         return PlanningScene(source=path)
     if isinstance(data, dict):
@@ -264,6 +316,12 @@ def load_scene(path: str | os.PathLike[str]) -> PlanningScene:
         data = data["objects"] or []
     if not isinstance(data, list):
         raise SceneError("expected a list of objects", path=path, line=1)
+    if len(data) > MAX_SCENE_OBJECTS:
+        raise SceneError(
+            f"the scene lists {len(data):,} objects; at most {MAX_SCENE_OBJECTS}",
+            path=path,
+            hint="merge obstacles into larger boxes or meshes; see 'Limits on input' in the README",
+        )
     scene = PlanningScene(source=path)
     for item in data:
         line = item.get("__line__") if isinstance(item, dict) else None
@@ -277,9 +335,28 @@ def load_scene(path: str | os.PathLike[str]) -> PlanningScene:
     return scene
 
 
+def _read_text(path: Path) -> str:
+    """The scene file's text: a regular file of at most :data:`MAX_SCENE_BYTES`, UTF-8."""
+    from workbench.model.limits import check_input_file
+
+    try:
+        check_input_file(path, "scene file", MAX_SCENE_BYTES)
+        data = path.read_bytes()
+    except ModelError as error:  # the size check's: said as a scene error
+        raise SceneError(error.message, path=path, hint=error.hint) from None
+    except OSError as error:
+        raise SceneError(f"cannot read the scene: {error.strerror}", path=path) from None
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError:
+        raise SceneError(
+            "the file is not UTF-8 text", path=path, hint="a scene is a YAML file"
+        ) from None
+
+
 def _object_from_dict(item: Any, base_dir: Path) -> SceneObject:
     if not isinstance(item, dict):
-        raise SceneError(f"each object must be a mapping with name and type, got {item!r}")
+        raise SceneError(f"each object must be a mapping with name and type, got {_shown(item)}")
     item = {k: v for k, v in item.items() if k != "__line__"}
     name = item.pop("name", None)
     if not isinstance(name, str) or not name:
@@ -315,11 +392,50 @@ def _object_from_dict(item: Any, base_dir: Path) -> SceneObject:
     if kind == "box":
         obj.size = _vec(item["size"])
     if kind in ("sphere", "cylinder"):
-        obj.radius = float(item["radius"])
+        obj.radius = _number(item["radius"], "radius")
     if kind == "cylinder":
-        obj.length = float(item["length"])
+        obj.length = _number(item["length"], "length")
     if kind == "mesh":
-        filename = Path(str(item["filename"]))
+        if not isinstance(item["filename"], str) or not item["filename"]:
+            raise SceneError(f"mesh '{name}': filename must be a file name")
+        filename = Path(item["filename"])
         obj.filename = filename if filename.is_absolute() else base_dir / filename
-        obj.scale = float(item.get("scale", 1.0))
+        obj.scale = _number(item.get("scale", 1.0), "scale")
     return obj
+
+
+def check_scene_mesh(name: str, path: Path) -> None:
+    """Check that Drake can build a convex hull of the mesh ``path``: format, size, 3D points.
+
+    Raises:
+        SceneError: Another format, not a regular file or too big, unreadable, or fewer
+            than four points that span a volume.
+    """
+    from workbench.model.limits import MAX_MESH_BYTES, check_input_file
+
+    suffix = path.suffix.lower()
+    if suffix not in SCENE_MESH_FORMATS:
+        raise SceneError(
+            f"mesh '{name}': {path} is not a mesh Drake can use here ('{suffix or path.name}')",
+            hint="use " + ", ".join(SCENE_MESH_FORMATS),
+        )
+    try:
+        check_input_file(path, "mesh", MAX_MESH_BYTES)
+    except ModelError as error:  # said as a scene error
+        raise SceneError(f"mesh '{name}': {error.message}", hint=error.hint) from None
+    if suffix == ".vtk":
+        return  # Drake reads VTK itself; trimesh cannot
+    try:
+        import trimesh
+
+        mesh: Any = trimesh.load(str(path), force="mesh")
+        points = np.asarray(mesh.vertices, dtype=float).reshape(-1, 3)
+    except Exception as error:  # trimesh raises many kinds; all mean "cannot read it"
+        raise SceneError(f"mesh '{name}': cannot read {path}: {error}") from None
+    spread = points - points.mean(axis=0) if len(points) else points
+    if len(points) < 4 or np.linalg.matrix_rank(spread, tol=1e-9) < 3:
+        raise SceneError(
+            f"mesh '{name}': {path} has no volume ({len(points)} points"
+            + (")" if len(points) < 4 else ", all in one plane)"),
+            hint="is it really a mesh? give an OBJ or glTF with a closed surface",
+        )

@@ -270,7 +270,7 @@ def run_setup(
     source_name = robot_source if isinstance(robot_source, (str, os.PathLike)) else robot.path
     target = Path(out_dir) if out_dir is not None else config_dir(source_name)
     if write:
-        config.save(target)
+        config.save(target, create_parents=out_dir is None)
         say(
             f"[12/12] Wrote {target / (semantic.name + '.srdf')} and {target / 'planning.yaml'} "
             f"(acceleration limits: velocity / {DEFAULT_ACCELERATION_TIME} s)"

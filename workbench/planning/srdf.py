@@ -18,6 +18,7 @@ pydrake; functions that resolve groups take any robot object with a
 from __future__ import annotations
 
 import difflib
+import math
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -29,6 +30,9 @@ from workbench.errors import PlanningError
 
 #: Reasons MoveIt's setup assistant writes for disabled collision pairs.
 REASONS = ("Adjacent", "Default", "Always", "Never", "User")
+
+#: Largest SRDF read, bytes.
+MAX_SRDF_BYTES = 16 * 1024 * 1024
 
 _HEADER = (
     "Semantic description of the robot for planning: groups, named states, end effectors\n"
@@ -447,12 +451,22 @@ def read_srdf(path: str | os.PathLike[str]) -> Srdf:
         SrdfError: Missing file, malformed XML, or an element lacking a required
             attribute or with a bad value (message names the file and line).
     """
+    from workbench.errors import ModelError
+    from workbench.model.limits import check_input_file
+    from workbench.paths import exists
+
     path = Path(path)
-    if not path.is_file():
+    if not exists(path):
         raise SrdfError(
             "SRDF file not found", path=path, hint="check the path or run workbench setup"
         )
-    return parse_srdf(path.read_bytes(), path=path)
+    try:
+        data = check_input_file(path, "SRDF", MAX_SRDF_BYTES).read_bytes()
+    except ModelError as error:
+        raise SrdfError(error.message, path=path, hint=error.hint) from None
+    except OSError as error:
+        raise SrdfError(f"cannot read the SRDF: {error.strerror}", path=path) from None
+    return parse_srdf(data, path=path)
 
 
 def parse_srdf(text: str | bytes, *, path: str | os.PathLike[str] | None = None) -> Srdf:
@@ -639,6 +653,13 @@ def _parse_value(el: Any, label: Any) -> Any:
     if not numbers:
         raise SrdfError(
             f"joint '{el.get('name')}' has an empty value", path=label, line=el.sourceline
+        )
+    if not all(math.isfinite(number) for number in numbers):
+        raise SrdfError(
+            f"joint '{el.get('name')}' has value '{text}', which is not a finite number",
+            path=label,
+            line=el.sourceline,
+            hint="give the joint position in rad, or in m for a prismatic joint",
         )
     return numbers[0] if len(numbers) == 1 else numbers
 

@@ -1,0 +1,241 @@
+"""What Drake must never see: checked before a URDF or SDF reaches its parser.
+
+Drake aborts the whole process (``Failure at ...``) or crashes on some input
+instead of raising: NaN joint limits, a robot name of tens of thousands of
+characters, ``inf`` where a vector is read. Every name and number of a model is
+checked here first, and the first problem is raised as one line naming the file,
+the line and the element.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+from lxml import etree
+
+from workbench.errors import ModelError
+from workbench.model.limits import (
+    MAX_LINKS,
+    MAX_MODEL_BYTES,
+    check_input_file,
+    name_problem,
+    shown_name,
+    xml_error_text,
+)
+
+#: Numbers URDF and SDF share: sizes, inertia, joint limits and dynamics.
+_SHARED_NUMBERS: tuple[str, ...] = (
+    "xyz",
+    "size",
+    "radius",
+    "length",
+    "scale",
+    "lower",
+    "upper",
+    "effort",
+)
+_SHARED_NUMBERS += ("velocity", "ixx", "ixy", "ixz", "iyy", "iyz", "izz", "damping", "friction")
+#: URDF attributes that hold numbers (anything Drake or ROS reads as a number).
+URDF_NUMBERS = frozenset(
+    _SHARED_NUMBERS
+    + ("rpy", "value", "rgba", "multiplier", "offset", "soft_lower_limit", "soft_upper_limit")
+    + ("k_position", "k_velocity", "rising", "falling", "reference_position")
+)
+#: URDF elements whose ``name`` is a name Drake keeps.
+URDF_NAMED = ("robot", "link", "joint", "material", "visual", "collision", "transmission")
+#: SDF elements whose ``name`` is a name Drake keeps.
+SDF_NAMED = ("model", "link", "joint", "visual", "collision", "frame", "world", "include")
+#: SDF elements whose text is numbers.
+SDF_NUMBERS = frozenset(
+    _SHARED_NUMBERS
+    + ("pose", "mass", "spring_reference", "spring_stiffness", "stiffness", "dissipation")
+    + ("mu", "mu2", "radii")
+)
+#: SDF elements whose text names another element (a joint's links).
+SDF_REFERENCES = ("parent", "child")
+#: SDF shapes and the sizes that must be above zero (sphere radius may be zero).
+SDF_SIZES = {"box": ("size",), "cylinder": ("radius", "length"), "capsule": ("radius", "length")}
+SDF_SIZES |= {"ellipsoid": ("radii",), "sphere": ()}
+
+
+class ModelInputError(ModelError):
+    """A name or number in a model that Drake cannot be given."""
+
+
+def _not_finite(label: str, shown: str, token: str) -> str:
+    if shown.strip() == token:
+        return f"{label}: {shown.strip()} is not a finite number"
+    return f"{label}: {shown} holds {token}, which is not a finite number"
+
+
+def _non_finite(text: str) -> str | None:
+    for token in text.replace(",", " ").split():
+        try:
+            value = float(token)
+        except ValueError:
+            continue
+        if not math.isfinite(value):
+            return token
+    return None
+
+
+def _label(element: Any, kinds: tuple[str, ...]) -> str:
+    """``joint 'j' <limit>``: the nearest named element and the path below it."""
+    path: list[str] = []
+    node = element
+    while node is not None and isinstance(node.tag, str):
+        if node.tag in kinds and node.get("name") is not None:
+            head = f"{node.tag} '{shown_name(node.get('name'))}'"
+            return " ".join([head, *reversed(path)])
+        path.append(f"<{node.tag}>")
+        node = node.getparent()
+    return " ".join(reversed(path))
+
+
+def _fail(message: str, path: Path | None, element: Any, hint: str) -> ModelInputError:
+    return ModelInputError(message, path=path, line=element.sourceline, hint=hint)
+
+
+def _check_names(root: Any, kinds: tuple[str, ...], path: Path | None) -> None:
+    counts = {"link": 0, "joint": 0}
+    for element in root.iter(*kinds):
+        name = element.get("name")
+        if element.tag in counts:
+            counts[element.tag] += 1
+        if name is None:
+            continue
+        problem = name_problem(name)
+        if problem is not None:
+            raise _fail(
+                f"<{element.tag}> name '{shown_name(name)}' {problem}",
+                path,
+                element,
+                "give it a short name of printable characters",
+            )
+    for kind, count in counts.items():
+        if count > MAX_LINKS:
+            raise ModelInputError(
+                f"the model has {count:,} {kind}s; workbench loads at most {MAX_LINKS:,}",
+                path=path,
+                hint="see 'Limits on input' in the README",
+            )
+
+
+def check_urdf_element(root: Any, path: Path | None) -> None:
+    """Check a URDF ``<robot>`` element's names and numbers before Drake parses it.
+
+    Raises:
+        ModelInputError: A name too long or with control characters, too many links,
+            or a number that is NaN or infinite (file, line and element named).
+    """
+    _check_names(root, URDF_NAMED, path)
+    for element in root.iter():
+        if not isinstance(element.tag, str) or element.tag == "gazebo":
+            continue
+        for attribute, text in element.attrib.items():
+            if attribute not in URDF_NUMBERS:
+                continue
+            token = _non_finite(text)
+            if token is not None:
+                raise _fail(
+                    _not_finite(_label(element, URDF_NAMED), f'{attribute}="{text}"', token),
+                    path,
+                    element,
+                    "write finite numbers (a joint without bounds is continuous)",
+                )
+
+
+def check_sdf_file(path: Path) -> None:
+    """Check an SDF file's names, numbers and shape sizes before Drake parses it.
+
+    Raises:
+        ModelInputError: A bad name, too many links, a NaN or infinite number, a shape
+            size that is not above zero, or joint limits that are reversed.
+        ModelError: The file cannot be read or is not XML.
+    """
+    check_input_file(path, "model file", MAX_MODEL_BYTES)
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=True)
+    try:
+        root = etree.parse(str(path), parser).getroot()
+    except etree.XMLSyntaxError as error:
+        raise ModelError(
+            f"not well-formed XML: {xml_error_text(str(error.msg))}",
+            path=path,
+            line=error.lineno,
+            hint="fix the XML syntax at that line",
+        ) from None
+    _check_names(root, SDF_NAMED, path)
+    for element in root.iter():
+        if not isinstance(element.tag, str) or element.tag == "plugin":
+            continue
+        if any(ancestor.tag == "plugin" for ancestor in element.iterancestors()):
+            continue
+        if element.tag in SDF_NUMBERS and element.text:
+            token = _non_finite(element.text)
+            if token is not None:
+                raise _fail(
+                    _not_finite(_label(element, SDF_NAMED), element.text.strip(), token),
+                    path,
+                    element,
+                    "write finite numbers",
+                )
+        if element.tag in SDF_REFERENCES and element.text and element.getparent().tag == "joint":
+            problem = name_problem(element.text.strip())
+            if problem is not None:
+                raise _fail(
+                    f"{_label(element, SDF_NAMED)}: the name '{shown_name(element.text.strip())}' "
+                    f"{problem}",
+                    path,
+                    element,
+                    "give it a short name of printable characters",
+                )
+        if element.tag in SDF_SIZES:
+            _check_sdf_shape(element, path)
+        if element.tag == "limit":
+            _check_sdf_limits(element, path)
+
+
+def _numbers(element: Any) -> list[float]:
+    try:
+        return [float(token) for token in (element.text or "").split()]
+    except ValueError:
+        return []
+
+
+def _check_sdf_shape(shape: Any, path: Path) -> None:
+    for field in SDF_SIZES[shape.tag]:
+        child = shape.find(field)
+        if child is None:
+            continue
+        for value in _numbers(child):
+            if not value > 0:
+                raise _fail(
+                    f"{_label(child, SDF_NAMED)}: {field} {value:g} must be more than zero",
+                    path,
+                    child,
+                    "give the shape's real size in metres",
+                )
+    radius = shape.find("radius") if shape.tag == "sphere" else None
+    if radius is not None and any(value < 0 for value in _numbers(radius)):
+        raise _fail(
+            f"{_label(radius, SDF_NAMED)}: the radius must be zero or more",
+            path,
+            radius,
+            "give the shape's real size in metres",
+        )
+
+
+def _check_sdf_limits(limit: Any, path: Path) -> None:
+    lower, upper = limit.find("lower"), limit.find("upper")
+    if lower is None or upper is None:
+        return
+    low, high = _numbers(lower), _numbers(upper)
+    if low and high and low[0] > high[0]:
+        raise _fail(
+            f"{_label(limit, SDF_NAMED)}: lower {low[0]:g} is above upper {high[0]:g}",
+            path,
+            limit,
+            "swap them",
+        )
