@@ -17,6 +17,7 @@ import shutil
 from pathlib import Path
 
 import pytest
+from lxml import etree
 from model_fuzz_helpers import (
     HOSTILE_EXPRESSIONS,
     HOSTILE_NAMES,
@@ -27,7 +28,6 @@ from model_fuzz_helpers import (
     watched,
 )
 from model_hostile_corpus import REPO, snapshot
-from lxml import etree
 
 from workbench.errors import WorkbenchError
 
