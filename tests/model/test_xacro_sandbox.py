@@ -182,7 +182,7 @@ def test_graph_of_a_3000_link_chain():
     """Issue 17, item 10: drawing a long chain from Python ended in RecursionError."""
     from workbench.model import graph_robot
 
-    graph = graph_robot(DATA / "hostile" / "models" / "chain_3000.urdf.xacro")
+    graph = graph_robot(DATA / "hostile_models" / "models" / "chain_3000.urdf.xacro")
     assert len(graph.get_nodes()) == 3001 + 3000
     assert graph.source.count(" -> ") == 2 * 3000
 
