@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import signal
+from pathlib import Path
 
 import pytest
 from process_helpers import Processes, free_port, joined_bus, private_core, wait_for, wait_port
@@ -115,6 +116,12 @@ def test_the_core_answers_hostile_requests_and_keeps_serving(tmp_path):
 
 
 @pytest.mark.multiprocess
+def _stopped(pid: int) -> bool:
+    """The process has taken SIGSTOP (state T in /proc)."""
+    stat = Path(f"/proc/{pid}/stat").read_text()
+    return stat[stat.rindex(")") + 2] == "T"
+
+
 def test_a_core_that_does_not_answer_is_one_line_naming_it(tmp_path):
     pytest.importorskip("zenoh")
 
@@ -128,6 +135,7 @@ def test_a_core_that_does_not_answer_is_one_line_naming_it(tmp_path):
         try:
             bus.params.set("/x", 1)
             core.send_signal(signal.SIGSTOP)  # a core that hangs (or is swamped)
+            assert wait_for(lambda: _stopped(core.pid), 10.0)
             try:
                 with pytest.raises(CoreError) as info:
                     bus.params.get("/x")

@@ -170,13 +170,20 @@ def known_packages(only: Sequence[str] | None = None) -> list[PackageTypes]:
     services = list_services()
     inside_services = {f"{name}{part}" for name in services for part in ("Request", "Response")}
     by_package: dict[str, tuple[list[str], list[str]]] = {}
+    wanted = None if only is None else set(only)
     for name in list_types():
-        if name not in inside_services and _exportable(name, [get_type(name)]):
-            by_package.setdefault(name.split("/")[0], ([], []))[0].append(name)
+        package = name.split("/")[0]
+        if name in inside_services or (wanted is not None and package not in wanted):
+            by_package.setdefault(package, ([], []))
+        elif _exportable(name, [get_type(name)]):
+            by_package.setdefault(package, ([], []))[0].append(name)
     for name in services:
+        package = name.split("/")[0]
         service = get_service(name)
-        if _exportable(name, [service.Request, service.Response]):
-            by_package.setdefault(name.split("/")[0], ([], []))[1].append(name)
+        if wanted is not None and package not in wanted:
+            by_package.setdefault(package, ([], []))
+        elif _exportable(name, [service.Request, service.Response]):
+            by_package.setdefault(package, ([], []))[1].append(name)
     for package in SKIPPED_PACKAGES:
         by_package.pop(package, None)
     names = sorted(by_package)
