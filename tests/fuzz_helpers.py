@@ -168,8 +168,10 @@ class WriteWatch:
         after = self._snapshot()
         for place, names in after.items():
             new = sorted(names - self.before[place])
-            # other tests running in parallel make their own pytest/tmp folders
-            new = [n for n in new if not n.startswith(("pytest-", "tmp", "pymp-", ".coverage"))]
+            # other tests running in parallel make their own pytest/tmp folders, and the
+            # launch tests their launches' log folders
+            parallel = ("pytest-", "tmp", "pymp-", ".coverage", "workbench-launch-")
+            new = [n for n in new if not n.startswith(parallel)]
             assert not new, f"files written outside the test's folder, in {place}: {new[:5]}"
 
 
