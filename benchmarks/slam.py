@@ -28,18 +28,22 @@ Peers, on both logs in the same run and with the same scans and odometry:
 MRPT's ``icp-slam`` and ``rbpf-slam`` (Debian's ``mrpt-apps``, MRPT 2.5.8),
 fed a rawlog written by ``mrpt_rawlog`` (which says how MRPT places the
 beams, and how its grids and its matching disagree on that) and run by
-``mrpt_peers`` with the configs MRPT ships (``icp-slam_demo_classic.ini``,
-``gridmapping_intel.ini`` or the one ``--rbpf-config`` names; only output, display, logging, range caps and
-rbpf-slam's ``RANDOM_SEED`` changed, its localization thresholds pinned to
-its insertion thresholds as shipped). Their odometry motion model is the
-Gaussian one covering the log's noise level
+``mrpt_peers`` with configs MRPT ships (``icp-slam_demo_classic.ini``;
+``gridmapping_optimal_sampling.ini`` or the one ``--rbpf-config`` names,
+e.g. ``gridmapping_intel.ini``), of which only output, display, logging,
+range caps and rbpf-slam's ``RANDOM_SEED`` are changed (its localization
+thresholds are pinned to its insertion thresholds, as shipped). Their
+odometry motion model is the Gaussian one covering the log's noise level
 (``MotionModel.from_odometry_noise``; the corridor log uses the middle
 level). icp-slam is scored at every scan, rbpf-slam's final most likely path
-at its keyframes (one per 0.5 m or 25 degrees). workbench's SLAM runs as a
-child process too, so that CPU time (user + system of the whole process)
-and peak memory (maximum resident set size) are measured alike for all
-three; ``CPU s`` of scan-to-scan ICP is in-process. Without ``mrpt-apps``
-the peers are left out with a one-line notice.
+at its keyframes (one per ``insertionLinDistance`` m or
+``insertionAngDistance_deg``: 1 m or 40 degrees by default). rbpf-slam runs
+``--rbpf-seeds`` times per log; the summary gives the median and range over
+all runs of a method. workbench's SLAM runs as a child process too, so that
+CPU time (user + system of the whole process) and peak memory (maximum
+resident set size) are measured alike for all three; ``CPU s`` of
+scan-to-scan ICP is in-process. Without ``mrpt-apps`` the peers are left out
+with a one-line notice.
 
 Run:  python benchmarks/slam.py [--log PATH] [--quick] [--seeds N] [--corridor-seeds N]
       [--rbpf-seeds N] [--rbpf-config INI] [--no-mrpt] [--timeout S]
@@ -202,7 +206,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--corridor-seeds", type=int, default=3, help="corridor log seeds")
     parser.add_argument("--only", choices=("intel", "corridor"), help="run one log only")
     parser.add_argument("--no-mrpt", action="store_true", help="leave MRPT's programs out")
-    parser.add_argument("--rbpf-seeds", type=int, default=1, help="rbpf-slam runs per log")
+    parser.add_argument("--rbpf-seeds", type=int, default=3, help="rbpf-slam runs per log")
     parser.add_argument(
         "--rbpf-config",
         type=Path,
@@ -385,7 +389,7 @@ def live_cost(seed: int, beams: int, rate: float, speed: float, config: SlamConf
 
 
 def run_corridor(seeds: int, out: Path, tmp: Path, timeout: float, peers: Peers | None) -> dict:
-    """workbench, dead reckoning, scan-to-scan ICP and the MRPT peers on the corridor log, per seed."""
+    """workbench, dead reckoning, scan-to-scan ICP and the MRPT peers on the corridor log."""
     print("\ncorridor log (workbench.mapping.corridors), 360 beams, 30 m range, two laps")
     rows = []
     for seed in range(seeds):
