@@ -26,7 +26,8 @@ class Measured:
 
 
 def run_measured(argv: Sequence[str], cwd: Path, timeout: float) -> Measured:
-    """Run ``argv`` in ``cwd`` (output to ``stdout.txt``/``stderr.txt`` there), at most ``timeout`` s.
+    """Run ``argv`` in ``cwd`` for ``timeout`` s at most, its output to ``stdout.txt`` and
+    ``stderr.txt`` there.
 
     The child's own rusage (``os.wait4``) gives its CPU time and peak memory.
     A child over time is killed; so is the child when this process is

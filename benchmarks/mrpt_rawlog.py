@@ -44,8 +44,8 @@ occupancy-grid insertion, ``COccupancyGridMap2D_insert.cpp``, spaces rays
 of a step clockwise of where its point is matched, up to one step, 1 degree
 for these scans. No aperture serves both; the mismatch turns rbpf-slam's
 heading clockwise keyframe by keyframe: 47 degrees over the corridor log's
-two laps (seed 0), and counter-clockwise instead with the beams written
-clockwise, ``rightToLeft`` false.)
+two laps (seed 0, ``gridmapping_intel.ini``), and counter-clockwise instead
+with the beams written clockwise, ``rightToLeft`` false.)
 Readings that are no return (at or beyond the scan's ``max_range``, NaN,
 inf, too short) are flagged invalid and stored as ``maxRange``.
 """

@@ -28,21 +28,25 @@ Peers, on both logs in the same run and with the same scans and odometry:
 MRPT's ``icp-slam`` and ``rbpf-slam`` (Debian's ``mrpt-apps``, MRPT 2.5.8),
 fed a rawlog written by ``mrpt_rawlog`` (which says how MRPT places the
 beams, and how its grids and its matching disagree on that) and run by
-``mrpt_peers`` with the configs MRPT ships (``icp-slam_demo_classic.ini``,
-``gridmapping_intel.ini``; only output, display, logging, range caps and
-rbpf-slam's ``RANDOM_SEED`` changed, its localization thresholds pinned to
-its insertion thresholds as shipped). Their odometry motion model is the
-Gaussian one covering the log's noise level
+``mrpt_peers`` with configs MRPT ships (``icp-slam_demo_classic.ini``;
+``gridmapping_optimal_sampling.ini`` or the one ``--rbpf-config`` names,
+e.g. ``gridmapping_intel.ini``), of which only output, display, logging,
+range caps and rbpf-slam's ``RANDOM_SEED`` are changed (its localization
+thresholds are pinned to its insertion thresholds, as shipped). Their
+odometry motion model is the Gaussian one covering the log's noise level
 (``MotionModel.from_odometry_noise``; the corridor log uses the middle
 level). icp-slam is scored at every scan, rbpf-slam's final most likely path
-at its keyframes (one per 0.5 m or 25 degrees). workbench's SLAM runs as a
-child process too, so that CPU time (user + system of the whole process)
-and peak memory (maximum resident set size) are measured alike for all
-three; ``CPU s`` of scan-to-scan ICP is in-process. Without ``mrpt-apps``
-the peers are left out with a one-line notice.
+at its keyframes (one per ``insertionLinDistance`` m or
+``insertionAngDistance_deg``: 1 m or 40 degrees by default). rbpf-slam runs
+``--rbpf-seeds`` times per log; the summary gives the median and range over
+all runs of a method. workbench's SLAM runs as a child process too, so that
+CPU time (user + system of the whole process) and peak memory (maximum
+resident set size) are measured alike for all three; ``CPU s`` of
+scan-to-scan ICP is in-process. Without ``mrpt-apps`` the peers are left out
+with a one-line notice.
 
 Run:  python benchmarks/slam.py [--log PATH] [--quick] [--seeds N] [--corridor-seeds N]
-      [--rbpf-seeds N] [--no-mrpt] [--timeout S]
+      [--rbpf-seeds N] [--rbpf-config INI] [--no-mrpt] [--timeout S]
 """
 
 from __future__ import annotations
@@ -59,7 +63,7 @@ from pathlib import Path
 
 import numpy as np
 from machine import describe  # noqa: E402
-from mrpt_peers import missing, peer_row, run_peers
+from mrpt_peers import RBPF_CONFIG, missing, peer_row, run_peers
 from mrpt_rawlog import MotionModel
 from scipy.spatial import cKDTree
 from slam_child import run_workbench
@@ -146,11 +150,13 @@ class Peers:
         workdir: Where rawlogs, configs and outputs go.
         rbpf_seeds: rbpf-slam's ``RANDOM_SEED`` values, one run each per log.
         timeout: Seconds a program may run before it is stopped and reported.
+        rbpf_shipped: The shipped rbpf-slam config its config is made from.
     """
 
     workdir: Path
     rbpf_seeds: list[int]
     timeout: float
+    rbpf_shipped: Path
 
 
 def peer_rows(
@@ -165,7 +171,15 @@ def peer_rows(
     """Rows of MRPT's icp-slam and rbpf-slam on ``scans`` with ``odom``, workbench's ATE at the
     same scans alongside (``ours``: its poses); rbpf-slam's first map kept as a PNG."""
     model = MotionModel.from_odometry_noise(alphas)
-    runs = run_peers(scans, odom, model, peers.workdir / name, peers.rbpf_seeds, peers.timeout)
+    runs = run_peers(
+        scans,
+        odom,
+        model,
+        peers.workdir / name,
+        peers.rbpf_seeds,
+        peers.timeout,
+        peers.rbpf_shipped,
+    )
     rows = []
     for run in runs:
         row = peer_row(run, reference, RELATION_DISTANCES)
@@ -192,7 +206,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--corridor-seeds", type=int, default=3, help="corridor log seeds")
     parser.add_argument("--only", choices=("intel", "corridor"), help="run one log only")
     parser.add_argument("--no-mrpt", action="store_true", help="leave MRPT's programs out")
-    parser.add_argument("--rbpf-seeds", type=int, default=1, help="rbpf-slam runs per log")
+    parser.add_argument("--rbpf-seeds", type=int, default=3, help="rbpf-slam runs per log")
+    parser.add_argument(
+        "--rbpf-config",
+        type=Path,
+        default=RBPF_CONFIG,
+        help="shipped rbpf-slam config to start from (default: %(default)s)",
+    )
     parser.add_argument(
         "--timeout",
         type=float,
@@ -200,6 +220,8 @@ def main(argv: list[str] | None = None) -> int:
         help="seconds per SLAM process before it is stopped",
     )
     args = parser.parse_args(argv)
+    if not args.no_mrpt and not args.rbpf_config.is_file() and RBPF_CONFIG.is_file():
+        parser.error(f"--rbpf-config {args.rbpf_config}: no such file")
     with tempfile.TemporaryDirectory(prefix="slam-benchmark-") as tmp:
         peers = None
         if not args.no_mrpt:
@@ -207,7 +229,8 @@ def main(argv: list[str] | None = None) -> int:
             if notice:
                 print(notice)
             else:
-                peers = Peers(Path(tmp), list(range(args.rbpf_seeds)), args.timeout)
+                seeds = list(range(args.rbpf_seeds))
+                peers = Peers(Path(tmp), seeds, args.timeout, args.rbpf_config)
         return run(args, Path(tmp), peers)
 
 
@@ -310,6 +333,7 @@ def run(args: argparse.Namespace, tmp: Path, peers: Peers | None) -> int:
                 "noise_parameters": "a1 rad/rad, a2 rad/m, a3 m/m, a4 m/rad",
                 "seeds": list(range(seeds)),
                 "rbpf_seeds": peers.rbpf_seeds if peers else [],
+                "rbpf_config": str(peers.rbpf_shipped) if peers else None,
                 "machine": info,
                 "config": config.__dict__,
                 "rows": rows,
@@ -365,7 +389,7 @@ def live_cost(seed: int, beams: int, rate: float, speed: float, config: SlamConf
 
 
 def run_corridor(seeds: int, out: Path, tmp: Path, timeout: float, peers: Peers | None) -> dict:
-    """workbench, dead reckoning, scan-to-scan ICP and the MRPT peers on the corridor log, per seed."""
+    """workbench, dead reckoning, scan-to-scan ICP and the MRPT peers on the corridor log."""
     print("\ncorridor log (workbench.mapping.corridors), 360 beams, 30 m range, two laps")
     rows = []
     for seed in range(seeds):
@@ -421,6 +445,7 @@ def run_corridor(seeds: int, out: Path, tmp: Path, timeout: float, peers: Peers 
         "summary": summary,
         "live": costs,
         "rbpf_seeds": peers.rbpf_seeds if peers else [],
+        "rbpf_config": str(peers.rbpf_shipped) if peers else None,
         "machine": describe(("numpy", "scipy"), mrpt=mrpt_version()),
     }
 

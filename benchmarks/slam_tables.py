@@ -93,7 +93,8 @@ def print_runs(rows: list[dict]) -> None:
         a, b = r["rel_1m"], r["rel_5m"]
         print(
             f"{start} {r['ate']:7.3f} "
-            f"{a['trans_mean']:8.3f} ± {a['trans_std']:5.3f} {a['rot_mean']:5.2f} ± {a['rot_std']:5.2f} "
+            f"{a['trans_mean']:8.3f} ± {a['trans_std']:5.3f} "
+            f"{a['rot_mean']:5.2f} ± {a['rot_std']:5.2f} "
             f"{b['trans_mean']:8.3f} ± {b['trans_std']:5.3f} {_num(r.get('cpu_s'), '.1f', 7)} "
             f"{_num(r.get('peak_mb'), '.0f', 8)} {_num(r.get('wall_s'), '.1f', 7)} "
             f"{_num(r.get('realtime_factor'), '.0f', 11)}"
@@ -118,6 +119,7 @@ def print_summary(summary: list[dict], group: str | None = None) -> None:
         print(
             f"{start} {spread:>24} {_num(s['rel_1m_trans'], '.3f', 8)} "
             f"{_num(s['rel_1m_rot'], '.2f', 10)} {_num(s['cpu_s'], '.1f', 7)} "
-            f"{_num(s['peak_mb'], '.0f', 8)} {_num(s.get('ate_median_ratio_to_workbench'), '.1f', 8)} "
+            f"{_num(s['peak_mb'], '.0f', 8)} "
+            f"{_num(s.get('ate_median_ratio_to_workbench'), '.1f', 8)} "
             f"{_num(s.get('cpu_ratio_to_workbench'), '.2f', 8)}{failed}"
         )

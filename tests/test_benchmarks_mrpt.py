@@ -281,3 +281,29 @@ def test_a_log_mrpt_cannot_take_gives_failed_runs(peers, rawlog, tmp_path: Path)
     assert all(r.status.startswith("failed: no rawlog: test:1: MRPT needs a finite") for r in runs)
     row = peers.peer_row(runs[1], np.zeros((1, 3)), (1.0,))
     assert row["ate"] is None and row["rel_1m"] is None and row["status"] == runs[1].status
+
+
+def test_rbpf_config_is_the_shipped_one_seeded_and_capped(peers, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    shipped = tmp_path / "shipped.ini"
+    shipped.write_text(
+        "[MappingApplication]\nlogOutput_dir=LOG\nSHOW_PROGRESS_IN_WINDOW=1\n"
+        "insertionLinDistance=0.7 // m\ninsertionAngDistance_deg=30.0\n"
+        "localizeLinDistance = 0.2\nsampleSize=20\n"
+        "[MappingApplication_occupancyGrid_00_insertOpts]\nmaxDistanceInsertion=30\n"
+        "[MappingApplication_occupancyGrid_00_likelihoodOpts]\nLF_maxRange=30\nLF_stdHit=0.05\n"
+    )
+    text = peers.rbpf_config(tmp_path / "out", 7, 12.5, shipped)
+    lines = set(text.splitlines())
+    for line in (
+        f"logOutput_dir = {tmp_path / 'out'}",
+        "SHOW_PROGRESS_IN_WINDOW = 0",
+        "RANDOM_SEED = 7",
+        "localizeLinDistance = 0.7",
+        "localizeAngDistance_deg = 30.0",
+        "sampleSize=20",
+        "maxDistanceInsertion = 12.5",
+        "LF_maxRange = 12.5",
+        "LF_stdHit=0.05",
+    ):
+        assert line in lines, line
+    assert text.index("maxDistanceInsertion = 12.5") > text.index("_insertOpts]")

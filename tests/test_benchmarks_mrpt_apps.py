@@ -110,9 +110,11 @@ def test_peers_follow_a_short_drive(modules, tmp_path: Path) -> None:  # type: i
     icp, rbpf = runs
     assert icp.status == "ok" and rbpf.status == "ok" and rbpf.seed == 0
     assert icp.indices.tolist() == list(range(30))
-    assert rbpf.indices[0] == 0 and 4 <= len(rbpf.indices) <= 8  # a keyframe per 0.5 m
-    for run in runs:
-        assert absolute_trajectory_error(run.poses, truth[run.indices]) < 0.05
+    assert rbpf.indices[0] == 0 and len(rbpf.indices) == 3
+    assert np.all(np.isin(np.diff(rbpf.indices), (10, 11)))  # a keyframe per metre
+    # A corridor pins the robot across it, not along it: rbpf-slam's 7 cm grid slips a little.
+    for run, bound in ((icp, 0.05), (rbpf, 0.15)):
+        assert absolute_trajectory_error(run.poses, truth[run.indices]) < bound
         assert run.cpu_s > 0 and run.peak_mb > 10
     row = peers.peer_row(rbpf, truth, (1.0,))
-    assert row["ate"] < 0.05 and row["rel_1m"]["pairs"] > 0 and row["poses"] == len(rbpf.indices)
+    assert row["ate"] < 0.15 and row["rel_1m"]["pairs"] > 0 and row["poses"] == len(rbpf.indices)
