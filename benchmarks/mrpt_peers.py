@@ -38,7 +38,8 @@ CONFIGS = Path("/usr/share/mrpt/config_files")
 ICP_CONFIG = CONFIGS / "icp-slam" / "icp-slam_demo_classic.ini"
 RBPF_CONFIG = CONFIGS / "rbpf-slam" / "gridmapping_optimal_sampling.ini"
 PROGRAMS = ("icp-slam", "rbpf-slam")
-INSTALL = "apt-get install mrpt-apps"
+#: The programs come with mrpt-apps, the shipped configs with mrpt-common (only recommended).
+INSTALL = "apt-get install mrpt-apps mrpt-common"
 SECTION = "MappingApplication"
 #: Settings of both programs: where to write, and no windows, scenes, images or per-step logs.
 QUIET = {

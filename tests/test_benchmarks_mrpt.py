@@ -265,7 +265,7 @@ def test_missing_programs_are_one_line_naming_the_package(peers, monkeypatch) ->
     monkeypatch.setattr(peers.shutil, "which", lambda name: None)
     notice = peers.missing()
     assert notice is not None and "\n" not in notice
-    assert "icp-slam, rbpf-slam" in notice and "apt-get install mrpt-apps" in notice
+    assert "icp-slam, rbpf-slam" in notice and "apt-get install mrpt-apps mrpt-common" in notice
 
 
 def test_a_log_mrpt_cannot_take_gives_failed_runs(peers, rawlog, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]

@@ -25,6 +25,11 @@ def modules():  # type: ignore[no-untyped-def]
     for program in ("rawlog-edit", "icp-slam", "rbpf-slam"):
         if shutil.which(program) is None:
             skip_or_fail(f"MRPT's {program} is not installed (apt-get install mrpt-apps)")
+    config = Path("/usr/share/mrpt/config_files/rbpf-slam/gridmapping_optimal_sampling.ini")
+    if not config.is_file():
+        skip_or_fail(
+            f"MRPT's shipped configs are not installed: no {config} (apt-get install mrpt-common)"
+        )
     with benchmark_modules("mrpt_rawlog", "mrpt_peers") as modules:
         yield modules
 
