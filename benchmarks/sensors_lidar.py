@@ -20,9 +20,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import statistics
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
@@ -30,6 +28,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
 from machine import describe  # noqa: E402
+from sensors import median_ms  # noqa: E402
 
 from workbench.sim import World  # noqa: E402
 from workbench.sim.sensors import Camera, Lidar, parse_sensor  # noqa: E402
@@ -135,16 +134,6 @@ def pybullet_world(shapes: list[tuple]):  # type: ignore[no-untyped-def]
             0, col, vis, basePosition=centre, baseOrientation=orn, physicsClientId=client
         )
     return p, client
-
-
-def median_ms(fn, repeats: int) -> float:  # type: ignore[no-untyped-def]
-    fn()  # warm up
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times) * 1e3
 
 
 def lidar_row(houses: int, repeats: int) -> dict[str, object]:
