@@ -51,6 +51,8 @@ LAYERS: dict[str, int] = {
     # capabilities (same layer; may use each other without cycles)
     "planning": 6,
     "mapping": 6,
+    "navigation": 6,
+    "actionlib": 6,
     "serial": 6,
     "sim": 6,
     "rviz": 6,
