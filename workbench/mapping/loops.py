@@ -15,6 +15,11 @@ order:
    plausible under their summed covariances (a Mahalanobis test against the
    graph's marginal covariance of the pair, not against the estimate alone);
 4. ``chi2``: after adding the edge and optimising, the closure is explained.
+
+A match that the current estimate already explains under the gate against the match's
+covariance alone passes without the graph's marginal covariance (adding a covariance only
+shrinks the Mahalanobis distance); a live map revisits known places every few keyframes,
+and the marginal costs a sparse factorisation of the whole graph.
 """
 
 from __future__ import annotations
@@ -44,7 +49,8 @@ class LoopOutcome:
             ``"degenerate"``, ``"gate"``, ``"chi2"``).
         candidate: The older node matched against (-1 when none).
         match: The match (None when none was made).
-        mahalanobis2: Squared Mahalanobis distance of the match from the estimate.
+        mahalanobis2: Squared Mahalanobis distance of the match from the estimate (an
+            upper bound, against the match's covariance alone, when that settled it).
     """
 
     accepted: bool
@@ -81,9 +87,11 @@ def check_and_add(
         if sigmas[0] > config.loop_max_sigma[0] or sigmas[2] > config.loop_max_sigma[1]:
             return LoopOutcome(False, "degenerate", candidate, match)
         measured = to_frame(match.covariance, float(match.pose[2]))
-        predicted = graph.relative_covariance(candidate, node, z)
         error = _errors(graph.nodes, np.array([candidate]), np.array([node]), z[None])[0]
-        d2 = float(error @ information(predicted + measured) @ error)
+        d2 = float(error @ information(measured) @ error)
+        if d2 > config.loop_gate:
+            predicted = graph.relative_covariance(candidate, node, z)
+            d2 = float(error @ information(predicted + measured) @ error)
         if d2 > config.loop_gate:
             return LoopOutcome(False, "gate", candidate, match, d2)
         edge = Edge(

@@ -64,6 +64,7 @@ class PoseGraph:
     nodes: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
     edges: list[Edge] = field(default_factory=list)
     cauchy: float = 3.0
+    _stacked: _EdgeArrays | None = field(default=None, init=False, repr=False, compare=False)
 
     def add_node(self, pose: np.ndarray) -> int:
         """Append a node and return its index."""
@@ -75,12 +76,14 @@ class PoseGraph:
         self.edges.append(edge)
 
     def _arrays(self):
-        i = np.array([e.i for e in self.edges], dtype=np.int64)
-        j = np.array([e.j for e in self.edges], dtype=np.int64)
-        z = np.array([e.z for e in self.edges], dtype=float).reshape(-1, 3)
-        w = np.array([e.sqrt_information() for e in self.edges], dtype=float).reshape(-1, 3, 3)
-        loop = np.array([e.loop for e in self.edges], dtype=bool)
-        return i, j, z, w, loop
+        """The edges as arrays, extended as edges are appended (a live graph grows by a few
+        edges between optimisations; whitening every edge anew each time dominated)."""
+        stacked = self._stacked
+        if stacked is None or not stacked.prefix_of(self.edges):
+            stacked = self._stacked = _EdgeArrays.of(self.edges)
+        else:
+            stacked.sync(self.edges)
+        return stacked.i, stacked.j, stacked.z, stacked.w, stacked.loop
 
     def residuals(self, nodes: np.ndarray | None = None) -> np.ndarray:
         """Whitened residuals ``(m, 3)`` of all edges at ``nodes`` (default: current)."""
@@ -169,6 +172,49 @@ class PoseGraph:
         ).toarray()
         a = np.concatenate([jac[:, 3 * i : 3 * i + 3], jac[:, 3 * j : 3 * j + 3]], axis=1)
         return a @ joint @ a.T
+
+
+class _EdgeArrays:
+    """Edge fields stacked into arrays, for the edges ``edges[:count]`` it was built from."""
+
+    def __init__(self) -> None:
+        self.objects: list[Edge] = []
+        self.i = np.zeros(0, dtype=np.int64)
+        self.j = np.zeros(0, dtype=np.int64)
+        self.z = np.zeros((0, 3))
+        self.w = np.zeros((0, 3, 3))
+        self.loop = np.zeros(0, dtype=bool)
+
+    @classmethod
+    def of(cls, edges: list[Edge]) -> _EdgeArrays:
+        stacked = cls()
+        stacked.sync(edges)
+        return stacked
+
+    def prefix_of(self, edges: list[Edge]) -> bool:
+        """Whether the stacked edges are still ``edges``' first ones (or ``edges`` is a
+        prefix of them, after edges were popped), the same objects unchanged."""
+        k = min(len(self.objects), len(edges))
+        return k == 0 or (self.objects[k - 1] is edges[k - 1] and self.objects[0] is edges[0])
+
+    def sync(self, edges: list[Edge]) -> None:
+        count = len(self.objects)
+        if len(edges) < count:
+            del self.objects[len(edges) :]
+            k = len(edges)
+            self.i, self.j, self.z = self.i[:k], self.j[:k], self.z[:k]
+            self.w, self.loop = self.w[:k], self.loop[:k]
+            return
+        new = edges[count:]
+        if not new:
+            return
+        self.objects.extend(new)
+        self.i = np.concatenate([self.i, np.array([e.i for e in new], dtype=np.int64)])
+        self.j = np.concatenate([self.j, np.array([e.j for e in new], dtype=np.int64)])
+        self.z = np.concatenate([self.z, np.array([e.z for e in new], dtype=float).reshape(-1, 3)])
+        w = np.array([e.sqrt_information() for e in new], dtype=float).reshape(-1, 3, 3)
+        self.w = np.concatenate([self.w, w])
+        self.loop = np.concatenate([self.loop, np.array([e.loop for e in new], dtype=bool)])
 
 
 def _errors(x: np.ndarray, i: np.ndarray, j: np.ndarray, z: np.ndarray) -> np.ndarray:
