@@ -106,7 +106,10 @@ class PoseTools:
     def _publisher(self, tool: str) -> Any:
         if tool not in self._publishers:
             if tool == "SetInitialPose":
-                topic, kind = self.settings.initial_pose_topic, "geometry_msgs/PoseWithCovarianceStamped"
+                topic, kind = (
+                    self.settings.initial_pose_topic,
+                    "geometry_msgs/PoseWithCovarianceStamped",
+                )
             else:
                 topic, kind = self.settings.goal_topic, "geometry_msgs/PoseStamped"
             self._publishers[tool] = self.node.create_publisher(topic, kind, queue_size=1)
@@ -196,7 +199,9 @@ class PoseTools:
         from workbench.rviz.displays import _arrow
         from workbench.spatial import rigid_transform
 
-        X = rigid_transform([x, y, 0.0], quaternion=(0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2)))
+        X = rigid_transform(
+            [x, y, 0.0], quaternion=(0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))
+        )
         _arrow(context, f"{context.prefix}/Tools/pose", X, length=1.0, colour=(0.0, 1.0, 0.0))
 
     def close(self) -> None:
