@@ -398,3 +398,32 @@ def test_the_tools_section_of_an_rviz_config_sets_topics_and_deviations(tmp_path
 
     with pytest.raises(ViewerError, match="Tools: SetInitialPose: X std deviation is not a number"):
         load_config(config)
+
+
+def test_the_turtlebot3_navigation_view_builds_with_its_tools(scene):
+    from types import SimpleNamespace
+
+    from workbench.bus.launch import find_package
+    from workbench.rviz.node import build
+
+    bus, node, meshcat = scene
+    view = find_package("turtlebot3_navigation") / "rviz" / "turtlebot3_navigation.rviz"
+    rviz = build(
+        SimpleNamespace(display_config=str(view), fixed_frame=None, port=None), bus, meshcat
+    )
+    assert [d.name for d in rviz.displays][-5:] == [
+        "Polygon", "Costmap (2)", "Planner (2)", "Amcl Particles", "Goal",
+    ]  # fmt: skip
+    costmaps = [d for d in rviz.displays if getattr(d, "color_scheme", None) == "costmap"]
+    assert [d.topic for d in costmaps] == [
+        "/move_base/global_costmap/costmap",
+        "/move_base/local_costmap/costmap",
+    ]
+    assert [d.layer for d in costmaps] == [1, 2]  # above the map
+    goals = _heard(node, "/move_base_simple/goal", PoseStamped)
+    rviz.update()
+    assert {"2D Pose Estimate", "2D Nav Goal"} <= set(meshcat.GetButtonNames())
+    click(meshcat, "2D Nav Goal")
+    rviz.update()
+    assert _wait(lambda: goals) and goals[0].header.frame_id == "map"
+    rviz.close()

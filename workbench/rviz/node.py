@@ -66,8 +66,7 @@ def build(args: argparse.Namespace, bus: Any = None, meshcat: Any = None) -> Any
         meshcat = Viewer(port=args.port).meshcat
     rviz = RViz(bus, fixed_frame=fixed, displays=displays, meshcat=meshcat, tools=tools)
     for spec in specs:
-        display = rviz.add_display(spec.class_name, **spec.options)
-        display.name = spec.name
+        display = rviz.add_display(spec.class_name, name=spec.name, **spec.options)
         display.enabled = spec.enabled
     return rviz
 

@@ -106,8 +106,14 @@ class RViz:
 
     # --- displays ----------------------------------------------------------------------
 
-    def add_display(self, display: Display | str, **options: Any) -> Display:
-        """Add a display (an object, or an RViz class name with its options) and subscribe it."""
+    def add_display(
+        self, display: Display | str, *, name: str | None = None, **options: Any
+    ) -> Display:
+        """Add a display (an object, or an RViz class name with its options) and subscribe it.
+
+        A name already taken gets `` (2)``, `` (3)`` ... appended (each display draws under
+        its own name in Meshcat).
+        """
         if isinstance(display, str):
             from workbench.errors import ViewerError
 
@@ -118,6 +124,8 @@ class RViz:
                     hint="one of: " + ", ".join(DISPLAY_CLASSES),
                 )
             display = cls(**options)
+        if name:
+            display.name = name
         names = {d.name for d in self.displays}
         base, index = display.name, 2
         while display.name in names:
