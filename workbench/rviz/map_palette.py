@@ -70,18 +70,21 @@ def raw_palette() -> np.ndarray:
 PALETTES = {"map": map_palette(), "costmap": costmap_palette(), "raw": raw_palette()}
 
 
-def _rank(scheme: str) -> np.ndarray:
-    """Which byte a shrunk block keeps (the highest rank): walls and high costs stay."""
+def _keys(scheme: str) -> np.ndarray:
+    """Per byte, ``rank * 256 + byte`` (uint16): a shrunk block keeps its largest key, so the
+    most telling cell (walls, high costs) stays."""
+    byte = np.arange(256)
     if scheme == "raw":
-        return np.arange(256)
-    rank = np.zeros(256, np.int64)
-    rank[1:101] = np.arange(1, 101) + 1  # more occupied / costlier first
-    rank[255] = 1  # unknown over free
-    rank[101:255] = 200  # illegal values show
-    return rank
+        rank = byte
+    else:
+        rank = np.zeros(256, np.int64)
+        rank[1:101] = byte[1:101] + 1  # more occupied / costlier first
+        rank[255] = 1  # unknown over free
+        rank[101:255] = 200  # illegal values show
+    return (rank * 256 + byte).astype(np.uint16)
 
 
-_RANKS = {scheme: _rank(scheme) for scheme in SCHEMES}
+_KEYS = {scheme: _keys(scheme) for scheme in SCHEMES}
 
 
 def shrink(cells: np.ndarray, factor: int, scheme: str) -> np.ndarray:
@@ -92,8 +95,8 @@ def shrink(cells: np.ndarray, factor: int, scheme: str) -> np.ndarray:
     """
     rows, cols = cells.shape
     h, w = -(-rows // factor) * factor, -(-cols // factor) * factor
-    key = np.zeros((h, w), np.int64)
-    key[:rows, :cols] = _RANKS[scheme][cells] * 256 + cells
+    key = np.zeros((h, w), np.uint16)
+    key[:rows, :cols] = _KEYS[scheme][cells]
     # factor^2 strided maxima: far faster than a reduction over a 4-d view
     out = key[0::factor, 0::factor].copy()
     for dr in range(factor):
@@ -111,7 +114,8 @@ def colour_cells(cells: np.ndarray, scheme: str, alpha: float) -> np.ndarray:
     """
     if scheme not in PALETTES:
         raise ValueError(f"unknown Color Scheme '{scheme}' (one of: {', '.join(SCHEMES)})")
-    rgba = PALETTES[scheme][cells].copy()
+    words = PALETTES[scheme].view(np.uint32)[:, 0]  # one gather of 4-byte words
+    rgba = words[cells].view(np.uint8).reshape(*cells.shape, 4)
     if scheme in TRANSPARENT_SCHEMES or alpha < OPAQUE_ALPHA:
         rgba[..., 3] = np.round(rgba[..., 3] * float(np.clip(alpha, 0.0, 1.0))).astype(np.uint8)
     else:
