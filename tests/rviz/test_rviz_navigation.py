@@ -427,3 +427,20 @@ def test_the_turtlebot3_navigation_view_builds_with_its_tools(scene):
     rviz.update()
     assert _wait(lambda: goals) and goals[0].header.frame_id == "map"
     rviz.close()
+
+
+def test_two_rviz_on_one_meshcat_keep_their_controls_when_one_closes(scene):
+    bus, node, meshcat = scene
+    goals = _heard(node, "/move_base_simple/goal", PoseStamped)
+    first = RViz(bus, fixed_frame="map", displays=[], meshcat=meshcat)
+    second = RViz(bus, fixed_frame="map", displays=[], meshcat=meshcat)
+    first.update()
+    second.update()
+    first.close()  # removes the panel's controls
+    second.update()  # puts them back
+    assert "2D Nav Goal" in meshcat.GetButtonNames()
+    meshcat.SetSliderValue("Pose x (m)", 2.0)
+    click(meshcat, "2D Nav Goal")
+    second.update()
+    assert _wait(lambda: goals) and goals[0].pose.position.x == 2.0
+    second.close()

@@ -159,15 +159,19 @@ class PoseTools:
         if not self.labels:
             return
         meshcat = context.meshcat
-        if self._meshcat is None:
-            self._meshcat = meshcat
+        buttons = set(meshcat.GetButtonNames())
+        if self._meshcat is None:  # a button left by an earlier RViz starts again at 0
             for label in self.labels:
-                if label in meshcat.GetButtonNames():
+                if label in buttons:
                     meshcat.DeleteButton(label)
+            buttons = set()
+        self._meshcat = meshcat
+        for label in self.labels:  # (again if another RViz of this Meshcat removed them)
+            if label not in buttons:
                 meshcat.AddButton(label)
                 self._clicks[label] = 0
         wanted = extent or DEFAULT_EXTENT
-        if wanted != self._extent:
+        if wanted != self._extent or not set(SLIDERS) <= set(meshcat.GetSliderNames()):
             self._bound_sliders(meshcat, wanted)
         x, y, yaw_deg = (meshcat.GetSliderValue(name) for name in SLIDERS)
         if (x, y, yaw_deg) != self._values:
