@@ -31,7 +31,7 @@ def test_features(data_dir):
     assert params["/description"].startswith("obstacle_range")
     assert params["/local_costmap/raytrace_range"] == 3.0
     assert params["/local_costmap/footprint"][0] == [-0.2, -0.2]
-    assert params["/inline"] == {"a": 1}
+    assert params["/inline/a"] == 1  # roslaunch sets a loaded dict leaf by leaf
     assert params["/r2/talker/unused"] == "x"
     assert params["/owner"] == "r2" and params["/adder/offset"] == 3
     talker = next(n for n in plan.nodes if n.name == "talker")
@@ -40,6 +40,27 @@ def test_features(data_dir):
     assert [n.name for n in plan.nodes] == ["talker", "adder"]  # listener is if=false
     adder = plan.nodes[1]
     assert adder.remaps["add_two_ints"] == "/sum" and adder.output == "screen"
+
+
+def test_a_rosparam_dict_adds_to_its_namespace_as_roslaunch_unrolls_it(tmp_path):
+    """roslaunch's loader.py add_param unrolls dicts: move_base's costmap files load the common
+    keys with ns="global_costmap", then a ``global_costmap:`` block at the node's namespace."""
+    (tmp_path / "common.yaml").write_text("obstacle_range: 2.5\nscan: {topic: scan}\n")
+    (tmp_path / "global.yaml").write_text("global_costmap: {global_frame: map, scan: {a: 1}}\n")
+    (tmp_path / "nav.launch").write_text(
+        """<launch><node pkg="move_base" type="move_base" name="move_base">
+        <rosparam file="$(dirname)/common.yaml" command="load" ns="global_costmap"/>
+        <rosparam file="$(dirname)/global.yaml" command="load"/>
+        <rosparam param="empty">{}</rosparam>
+        </node></launch>"""
+    )
+    plan = load_launch(tmp_path / "nav.launch")
+    assert plan.params == {
+        "/move_base/global_costmap/obstacle_range": 2.5,
+        "/move_base/global_costmap/scan/topic": "scan",
+        "/move_base/global_costmap/global_frame": "map",
+        "/move_base/global_costmap/scan/a": 1,
+    }
 
 
 @pytest.mark.parametrize(

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import struct
+
 import numpy as np
 
 from workbench.msgs.geometry_msgs import Point
@@ -26,6 +28,7 @@ def recording_meshcat():
         _MESHCAT.DeleteButton(name)
     _MESHCAT.transforms.clear()
     _MESHCAT.objects.clear()
+    _MESHCAT.lines.clear()
     return _MESHCAT
 
 
@@ -37,6 +40,8 @@ def _make_recording_meshcat():
             super().__init__(MeshcatParams(host="127.0.0.1"))
             self.transforms: dict[str, np.ndarray] = {}
             self.objects: dict[str, object] = {}
+            # path -> (starts (3, N), ends (3, N) or None for a strip, rgba)
+            self.lines: dict[str, tuple[np.ndarray, np.ndarray | None, tuple]] = {}
 
         def SetTransform(self, path, X, *args):  # noqa: N802 - Meshcat's name
             self.transforms[path] = X.GetAsMatrix4()
@@ -46,7 +51,36 @@ def _make_recording_meshcat():
             self.objects[path] = thing
             return super().SetObject(path, thing, *args)
 
+        def SetLine(self, path, vertices, width, rgba, *args):  # noqa: N802 - Meshcat's name
+            self.lines[path] = (np.array(vertices), None, _rgba_tuple(rgba))
+            return super().SetLine(path, vertices, width, rgba, *args)
+
+        def SetLineSegments(self, path, starts, ends, width, rgba, *args):  # noqa: N802
+            self.lines[path] = (np.array(starts), np.array(ends), _rgba_tuple(rgba))
+            return super().SetLineSegments(path, starts, ends, width, rgba, *args)
+
     return RecordingMeshcat()
+
+
+def _rgba_tuple(rgba) -> tuple[float, float, float, float]:
+    return (rgba.r(), rgba.g(), rgba.b(), rgba.a())
+
+
+def _msgpack(value) -> bytes:
+    """MessagePack of a dict of short strings and floats (what Meshcat's browser sends)."""
+    if isinstance(value, dict):
+        return bytes([0x80 | len(value)]) + b"".join(
+            _msgpack(k) + _msgpack(v) for k, v in value.items()
+        )
+    if isinstance(value, str):
+        data = value.encode()
+        return (bytes([0xA0 | len(data)]) if len(data) < 32 else bytes([0xD9, len(data)])) + data
+    return b"\xcb" + struct.pack(">d", float(value))
+
+
+def click(meshcat, label: str) -> None:
+    """A click on button ``label``, as the browser's control panel reports it."""
+    meshcat._InjectWebsocketMessage(_msgpack({"type": "button", "name": label}))
 
 
 def marker(kind: int, marker_id: int = 0, ns: str = "test", frame: str = "map", **fields):

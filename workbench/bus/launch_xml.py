@@ -170,14 +170,24 @@ def _rosparam(element: Any, ctx: LaunchContext, plan: LaunchPlan, namespace: str
     data = rosparam_data(file, inline, ctx, where, line)
     target = _attr(element, "param", ctx)
     if target is not None:
-        plan.params[param_name(target, base)] = data
+        _unrolled(plan, param_name(target, base), data)
     elif file is not None and ctx.shared.dry_run:
         plan.rosparam_files.append((base, file))
     elif isinstance(data, dict):
-        for key, value in data.items():
-            plan.params[param_name(str(key), base)] = value
+        _unrolled(plan, base, data)
     elif data is not None:
         raise ctx.error("<rosparam> without param= needs a YAML dictionary", line)
+
+
+def _unrolled(plan: LaunchPlan, name: str, value: Any) -> None:
+    """Set ``value`` leaf by leaf, as roslaunch's loader does (``add_param`` unrolls a dict):
+    a file loaded into a namespace adds to what is there instead of replacing it (move_base's
+    ``global_costmap:`` block after costmap_common_params.yaml loaded with ns="global_costmap")."""
+    if isinstance(value, dict):
+        for key, item in value.items():
+            _unrolled(plan, param_name(str(key), name), item)
+    else:
+        plan.params[name] = value
 
 
 def _node(element: Any, ctx: LaunchContext, plan: LaunchPlan) -> NodeSpec:

@@ -1,10 +1,13 @@
 """RViz's ``.rviz`` configuration files (YAML): the fixed frame and the display list.
 
-Read: ``Visualization Manager`` → ``Global Options`` → ``Fixed Frame`` and
+Read: ``Visualization Manager`` → ``Global Options`` → ``Fixed Frame``,
 ``Displays`` (each with ``Class``, ``Name``, ``Enabled`` and, per class, its
-topic: ``Topic``, ``Marker Topic``, or ``Robot Description``). Displays of
-classes workbench does not draw are listed in one warning and skipped; a file
-that is not YAML or not an RViz config is a one-line error.
+topic: ``Topic``, ``Marker Topic``, or ``Robot Description``; a Map's ``Color
+Scheme`` and ``Alpha``; the ``Color`` and ``Alpha`` of Path, PoseArray and
+Polygon) and ``Tools`` (``rviz/SetInitialPose`` and ``rviz/SetGoal`` with their
+``Topic`` and standard deviations). Displays of classes workbench does not draw
+are listed in one warning and skipped; a file that is not YAML or not an RViz
+config is a one-line error.
 """
 
 from __future__ import annotations
@@ -15,6 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from workbench.errors import ViewerError
+from workbench.rviz.pose_tools import TOOL_LABELS, ToolSettings
 
 
 @dataclass
@@ -34,6 +38,7 @@ class RvizConfig:
     fixed_frame: str | None
     displays: list[DisplaySpec]
     unknown: list[str]
+    tools: ToolSettings = field(default_factory=ToolSettings)
 
 
 def load_config(path: str | os.PathLike[str]) -> RvizConfig:
@@ -75,12 +80,58 @@ def load_config(path: str | os.PathLike[str]) -> RvizConfig:
         if class_name not in DISPLAY_CLASSES:
             unknown.append(f"{name} ({entry.get('Class', '?')})")
             continue
-        displays.append(
-            DisplaySpec(
-                class_name, name, bool(entry.get("Enabled", True)), _options(class_name, entry)
-            )
-        )
-    return RvizConfig(str(fixed) if fixed else None, displays, unknown)
+        try:
+            options = _options(class_name, entry)
+        except (TypeError, ValueError) as error:
+            raise ViewerError(f"display '{name}': {error}", path=file) from None
+        displays.append(DisplaySpec(class_name, name, bool(entry.get("Enabled", True)), options))
+    tools = _tools(manager.get("Tools"), file)
+    return RvizConfig(str(fixed) if fixed else None, displays, unknown, tools)
+
+
+def _tools(entries: Any, file: Path) -> ToolSettings:
+    """The pose tools a ``Tools:`` list names (none when it names none; both without one)."""
+    settings = ToolSettings()
+    if not isinstance(entries, list):
+        return settings
+    present = []
+    for entry in entries:
+        if not isinstance(entry, dict):
+            continue
+        tool = str(entry.get("Class", "")).split("/")[-1]
+        if tool not in TOOL_LABELS:
+            continue
+        present.append(tool)
+        if tool == "SetGoal":
+            settings.goal_topic = str(entry.get("Topic", "goal"))  # GoalTool's own default
+            continue
+        settings.initial_pose_topic = str(entry.get("Topic", settings.initial_pose_topic))
+        for key, attribute in (
+            ("X std deviation", "std_dev_x"),
+            ("Y std deviation", "std_dev_y"),
+            ("Theta std deviation", "std_dev_theta"),
+        ):
+            if key in entry:
+                setattr(settings, attribute, _number(entry[key], f"Tools: {tool}: {key}", file))
+    settings.tools = tuple(present)
+    return settings
+
+
+def _number(value: Any, where: str, file: Path) -> float:
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        raise ViewerError(f"{where} is not a number: {value!r}", path=file) from None
+
+
+def _colour(value: Any, default: tuple[float, float, float]) -> tuple[float, float, float]:
+    """RViz's ``"r; g; b"`` (0-255) as floats in [0, 1] (the default when unreadable)."""
+    parts = str(value).split(";")
+    try:
+        rgb = tuple(min(max(float(p) / 255.0, 0.0), 1.0) for p in parts)
+    except ValueError:
+        return default
+    return rgb if len(rgb) == 3 else default  # type: ignore[return-value]
 
 
 def _flatten(entries: Any) -> list[dict[str, Any]]:
@@ -116,6 +167,16 @@ def _options(class_name: str, entry: dict[str, Any]) -> dict[str, Any]:
             "frame": str(entry.get("Reference Frame", "") or "").replace("<Fixed Frame>", ""),
             "length": float(entry.get("Length", 1.0)),
         }
-    if "Topic" in entry:
-        return {"topic": entry["Topic"]}
-    return {}
+    options: dict[str, Any] = {"topic": entry["Topic"]} if "Topic" in entry else {}
+    if class_name == "Map":
+        options["color_scheme"] = str(entry.get("Color Scheme", "map"))
+        options["alpha"] = float(entry.get("Alpha", 0.7))
+    if class_name in ("Path", "PoseArray", "Polygon"):
+        from workbench.rviz.rviz import DISPLAY_CLASSES
+
+        default = DISPLAY_CLASSES[class_name].default_color  # type: ignore[attr-defined]
+        options["color"] = _colour(entry.get("Color", ""), default)
+        options["alpha"] = float(entry.get("Alpha", 1.0))
+    if class_name == "PoseArray" and "Arrow Length" in entry:
+        options["arrow_length"] = float(entry["Arrow Length"])
+    return options

@@ -246,35 +246,75 @@ def _cloud(
 
 
 class MapDisplay(Display):
-    """``nav_msgs/OccupancyGrid`` in RViz's "map" colours: free white, occupied black, unknown grey."""
+    """``nav_msgs/OccupancyGrid`` in one of RViz's colour schemes (``map``, ``costmap``, ``raw``).
+
+    Args:
+        topic: The grid's topic (default ``map``).
+        color_scheme: RViz's ``Color Scheme`` (see :mod:`workbench.rviz.map_palette`).
+        alpha: RViz's ``Alpha`` (0.7 as RViz's default).
+        name: The display's name.
+    """
 
     class_name = "Map"
 
     message_type = "nav_msgs/OccupancyGrid"
     default_topic = "map"
 
+    def __init__(
+        self,
+        topic: str | None = None,
+        color_scheme: str = "map",
+        alpha: float = 0.7,
+        name: str | None = None,
+    ) -> None:
+        from workbench.errors import ViewerError
+        from workbench.rviz.map_palette import SCHEMES
+
+        super().__init__(topic, name)
+        if color_scheme not in SCHEMES:
+            raise ViewerError(
+                f"Map display '{self.name}': unknown Color Scheme '{color_scheme}'",
+                hint="one of: " + ", ".join(SCHEMES),
+            )
+        self.color_scheme = color_scheme
+        self.alpha = float(alpha)
+        #: Drawn this many 2 mm steps above z = 0, so that maps drawn over each other
+        #: (a costmap over the map) do not flicker; RViz.add_display sets it.
+        self.layer = 0
+        #: ``(x_min, x_max, y_min, y_max)`` of the last map drawn, in the fixed frame (m).
+        self.extent: tuple[float, float, float, float] | None = None
+
     def draw(self, context: Context, message: Any) -> None:
+        from workbench.rviz.map_palette import colour_cells, is_opaque, shrink
+
         info = message.info
         width, height, resolution = info.width, info.height, info.resolution
         if width * height == 0 or not resolution > 0:
             self.status["Map"] = (
-                "Map is zero-sized" if width * height == 0 else "Resolution is not positive"
+                f"Map is zero-sized ({width}x{height})"
+                if width * height == 0
+                else "Resolution is not positive"
             )
             return
         data = message.data
         raw = (
             np.frombuffer(bytes(data), dtype=np.int8)
             if isinstance(data, (bytes, bytearray))
-            else data
+            else np.asarray(data, dtype=np.int64).astype(np.int8)
         )
-        cells = np.asarray(raw, dtype=np.int8).reshape(height, width)
-        grey = _MAP_COLOURS[cells.view(np.uint8)]  # RViz "map": 0 white, 100 black, -1 grey
+        if raw.size != width * height:
+            self.status["Map"] = (
+                f"Data size doesn't match width*height: width = {width}, height = {height}, "
+                f"data size = {raw.size}"
+            )
+            return
+        cells = raw.reshape(height, width).view(np.uint8)
         factor = int(np.ceil(max(width, height) / MAP_TEXTURE_LIMIT))
         if factor > 1:
-            grey = _darkest(grey, factor)
+            cells = shrink(cells, factor, self.color_scheme)
             self.status["Resolution"] = (
-                f"{width}x{height} cells drawn as {grey.shape[1]}x{grey.shape[0]} "
-                "(the darkest cell of each block, so walls stay)"
+                f"{width}x{height} cells drawn as {cells.shape[1]}x{cells.shape[0]} "
+                "(the most occupied cell of each block, so walls stay)"
             )
         else:
             self.status.pop("Resolution", None)
@@ -283,11 +323,20 @@ class MapDisplay(Display):
         from workbench.paths import cache_root
         from workbench.rviz.texture import write_quad
 
+        rgba = colour_cells(cells, self.color_scheme, self.alpha)
+        opaque = is_opaque(self.color_scheme, self.alpha)
         path = f"{context.prefix}/{self.path}"
-        quad = write_quad(cache_root() / "rviz", grey, width * resolution, height * resolution)
+        size_x, size_y = width * resolution, height * resolution
+        quad = write_quad(cache_root() / "rviz", rgba, size_x, size_y, blend=not opaque)
         context.meshcat.SetObject(path + "/image", Mesh(str(quad)))  # type: ignore[call-overload]
+        from workbench.spatial import rigid_transform
+
         X_FM = _stamped_transform(context, message.header).multiply(_pose_transform(info.origin))
         context.meshcat.SetTransform(path, X_FM)
+        context.meshcat.SetTransform(path + "/image", rigid_transform([0, 0, 0.002 * self.layer]))
+        corners = np.array([[0, 0, 0], [size_x, 0, 0], [0, size_y, 0], [size_x, size_y, 0]]).T
+        xy = (X_FM.rotation().matrix() @ corners + X_FM.translation()[:, None])[:2]
+        self.extent = (xy[0].min(), xy[0].max(), xy[1].min(), xy[1].max())
         self.status.pop("Map", None)
 
 
@@ -295,35 +344,26 @@ class MapDisplay(Display):
 MAP_TEXTURE_LIMIT = 2048
 
 
-def _map_colours() -> np.ndarray:
-    """Grey level (0-255) of every int8 cell value, indexed by its byte."""
-    values = np.arange(256, dtype=np.int16)
-    signed = np.where(values > 127, values - 256, values)
-    occupied = np.clip(signed, 0, 100)
-    grey = np.where(signed < 0, 112, 255 - (occupied * 255 + 50) // 100)
-    return grey.astype(np.uint8)
+class _ColouredDisplay(Display):
+    """A topic display drawn in one colour (RViz's ``Color`` and ``Alpha`` properties)."""
+
+    default_color: tuple[float, float, float] = (25 / 255, 1.0, 0.0)
+
+    def __init__(
+        self,
+        topic: str | None = None,
+        color: tuple[float, float, float] | None = None,
+        alpha: float = 1.0,
+        name: str | None = None,
+    ) -> None:
+        super().__init__(topic, name)
+        self.color = tuple(color) if color is not None else self.default_color
+        self.alpha = float(alpha)
 
 
-_MAP_COLOURS = _map_colours()
-
-
-def _darkest(grey: np.ndarray, factor: int) -> np.ndarray:
-    """Shrink by ``factor`` keeping each block's darkest cell."""
-    rows, cols = grey.shape
-    h, w = -(-rows // factor) * factor, -(-cols // factor) * factor
-    padded = np.full((h, w), 255, np.uint8)
-    padded[:rows, :cols] = grey
-    # factor^2 strided minima: far faster than a reduction over a 4-d view
-    out = padded[0::factor, 0::factor].copy()
-    for dr in range(factor):
-        for dc in range(factor):
-            if dr or dc:
-                np.minimum(out, padded[dr::factor, dc::factor], out=out)
-    return out
-
-
-class PathDisplay(Display):
-    """``nav_msgs/Path`` as a line strip (RViz: green)."""
+class PathDisplay(_ColouredDisplay):
+    """``nav_msgs/Path`` as a line strip through its poses, in the path's header frame
+    (RViz's default ``Lines`` style, colour 25; 255; 0)."""
 
     class_name = "Path"
 
@@ -331,17 +371,17 @@ class PathDisplay(Display):
     default_topic = "path"
 
     def draw(self, context: Context, message: Any) -> None:
-        if len(message.poses) < 2:
-            context.meshcat.Delete(f"{context.prefix}/{self.path}")
+        path = f"{context.prefix}/{self.path}"
+        if len(message.poses) < 2:  # nothing to join: an empty plan clears the line
+            context.meshcat.Delete(path)
             return
         X = _stamped_transform(context, message.header)
         pts = np.array(
             [[p.pose.position.x, p.pose.position.y, p.pose.position.z] for p in message.poses]
         ).T
-        context.meshcat.SetLine(
-            f"{context.prefix}/{self.path}", np.asfortranarray(pts), 2.0, _rgba((0.1, 1.0, 0.1))
-        )
-        context.meshcat.SetTransform(f"{context.prefix}/{self.path}", X)
+        colour = _rgba(self.color, self.alpha)
+        context.meshcat.SetLine(path, np.asfortranarray(pts), 2.0, colour)
+        context.meshcat.SetTransform(path, X)
 
 
 class PoseDisplay(Display):
@@ -357,20 +397,62 @@ class PoseDisplay(Display):
         _arrow(context, f"{context.prefix}/{self.path}", X)
 
 
-class PoseArrayDisplay(Display):
-    """``geometry_msgs/PoseArray`` as one arrow per pose."""
+class PoseArrayDisplay(_ColouredDisplay):
+    """``geometry_msgs/PoseArray`` (AMCL's particle cloud) as RViz's "Arrow (Flat)" shape:
+    per pose a line of ``arrow_length`` along its x and two head strokes to
+    ``(0.75, +-0.2) * arrow_length``, colour 255; 25; 0, all in one line set."""
 
     class_name = "PoseArray"
 
     message_type = "geometry_msgs/PoseArray"
     default_topic = "particlecloud"
+    default_color = (1.0, 25 / 255, 0.0)
+
+    def __init__(
+        self,
+        topic: str | None = None,
+        color: tuple[float, float, float] | None = None,
+        alpha: float = 1.0,
+        arrow_length: float = 0.3,
+        name: str | None = None,
+    ) -> None:
+        super().__init__(topic, color, alpha, name)
+        self.arrow_length = float(arrow_length)
 
     def draw(self, context: Context, message: Any) -> None:
+        path = f"{context.prefix}/{self.path}"
+        if not message.poses:
+            context.meshcat.Delete(path)
+            return
+        starts, ends = flat_arrows(message.poses, self.arrow_length)
         X_FH = _stamped_transform(context, message.header)
-        base = f"{context.prefix}/{self.path}"
-        context.meshcat.Delete(base)
-        for i, pose in enumerate(message.poses[:2000]):
-            _arrow(context, f"{base}/{i}", X_FH.multiply(_pose_transform(pose)), length=0.3)
+        context.meshcat.SetLineSegments(
+            path, np.asfortranarray(starts), np.asfortranarray(ends), 1.0,
+            _rgba(self.color, self.alpha),
+        )  # fmt: skip
+        context.meshcat.SetTransform(path, X_FH)
+
+
+def flat_arrows(poses: Any, length: float) -> tuple[np.ndarray, np.ndarray]:
+    """Segment starts and ends (3, 3N) of RViz's flat arrows for ``poses`` (m).
+
+    Quaternions are normalised; an all-zero one counts as the identity.
+    """
+    from scipy.spatial.transform import Rotation
+
+    p = np.array([[q.position.x, q.position.y, q.position.z] for q in poses], dtype=float)
+    q = np.array(
+        [[o.orientation.x, o.orientation.y, o.orientation.z, o.orientation.w] for o in poses],
+        dtype=float,
+    )
+    q[~np.any(q != 0.0, axis=1)] = (0.0, 0.0, 0.0, 1.0)
+    R = Rotation.from_quat(q)
+    tip = p + R.apply(np.array([length, 0.0, 0.0]))
+    left = p + R.apply(np.array([0.75 * length, 0.2 * length, 0.0]))
+    right = p + R.apply(np.array([0.75 * length, -0.2 * length, 0.0]))
+    starts = np.stack([p, tip, tip], axis=1).reshape(-1, 3).T
+    ends = np.stack([tip, left, right], axis=1).reshape(-1, 3).T
+    return starts, ends
 
 
 class OdometryDisplay(Display):

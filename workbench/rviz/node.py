@@ -49,12 +49,14 @@ def build(args: argparse.Namespace, bus: Any = None, meshcat: Any = None) -> Any
     fixed = args.fixed_frame
     displays: list[Any] = list(DEFAULT_DISPLAYS)
     specs = []
+    tools = None
     if args.display_config:
         from workbench.rviz.config import load_config
 
         config = load_config(args.display_config)
         fixed = fixed or config.fixed_frame
         specs = config.displays
+        tools = config.tools
         displays = []
         if config.unknown:
             _LOG.warning("not drawn here (unknown display classes): %s", ", ".join(config.unknown))
@@ -62,10 +64,9 @@ def build(args: argparse.Namespace, bus: Any = None, meshcat: Any = None) -> Any
         from workbench.viz import Viewer
 
         meshcat = Viewer(port=args.port).meshcat
-    rviz = RViz(bus, fixed_frame=fixed, displays=displays, meshcat=meshcat)
+    rviz = RViz(bus, fixed_frame=fixed, displays=displays, meshcat=meshcat, tools=tools)
     for spec in specs:
-        display = rviz.add_display(spec.class_name, **spec.options)
-        display.name = spec.name
+        display = rviz.add_display(spec.class_name, name=spec.name, **spec.options)
         display.enabled = spec.enabled
     return rviz
 

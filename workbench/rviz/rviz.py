@@ -29,6 +29,8 @@ from workbench.rviz import displays as stock
 from workbench.rviz.display import Context, Display
 from workbench.rviz.interactive_display import InteractiveMarkerDisplay
 from workbench.rviz.marker_display import MarkerArrayDisplay, MarkerDisplay
+from workbench.rviz.polygon_display import PolygonDisplay
+from workbench.rviz.pose_tools import PoseTools, ToolSettings
 
 #: RViz display class names -> workbench displays.
 DISPLAY_CLASSES: dict[str, type[Display]] = {
@@ -45,6 +47,7 @@ DISPLAY_CLASSES: dict[str, type[Display]] = {
     "Path": stock.PathDisplay,
     "Pose": stock.PoseDisplay,
     "PoseArray": stock.PoseArrayDisplay,
+    "Polygon": PolygonDisplay,
     "Odometry": stock.OdometryDisplay,
 }
 
@@ -61,6 +64,10 @@ class RViz:
             MarkerArray).
         meshcat: A pydrake ``Meshcat`` (default: the process viewer's).
         name: The node name (anonymous, as rviz's).
+        tools: The "2D Pose Estimate" and "2D Nav Goal" tools' settings (default: both,
+            with RViz's topics); their buttons and sliders appear in Meshcat's panel.
+            ``ToolSettings(tools=())`` leaves the panel alone (the Python calls
+            :meth:`set_pose_estimate` and :meth:`send_goal` still work).
     """
 
     def __init__(
@@ -71,6 +78,7 @@ class RViz:
         displays: list[Display | str] | None = None,
         meshcat: Any = None,
         name: str = "rviz",
+        tools: ToolSettings | None = None,
     ) -> None:
         from workbench.bus import Node
         from workbench.tf import Buffer, TransformListener
@@ -84,6 +92,7 @@ class RViz:
         self.buffer = Buffer()
         self.listener = TransformListener(self.buffer, self.node)
         self.requested_frame = fixed_frame
+        self.tools = PoseTools(self.node, tools)
         self.displays: list[Display] = []
         chosen = displays if displays is not None else ["Grid", "TF", "Marker", "MarkerArray"]
         for display in chosen:
@@ -97,8 +106,14 @@ class RViz:
 
     # --- displays ----------------------------------------------------------------------
 
-    def add_display(self, display: Display | str, **options: Any) -> Display:
-        """Add a display (an object, or an RViz class name with its options) and subscribe it."""
+    def add_display(
+        self, display: Display | str, *, name: str | None = None, **options: Any
+    ) -> Display:
+        """Add a display (an object, or an RViz class name with its options) and subscribe it.
+
+        A name already taken gets `` (2)``, `` (3)`` ... appended (each display draws under
+        its own name in Meshcat).
+        """
         if isinstance(display, str):
             from workbench.errors import ViewerError
 
@@ -109,14 +124,51 @@ class RViz:
                     hint="one of: " + ", ".join(DISPLAY_CLASSES),
                 )
             display = cls(**options)
+        if name:
+            display.name = name
         names = {d.name for d in self.displays}
         base, index = display.name, 2
         while display.name in names:
             display.name = f"{base} ({index})"
             index += 1
+        if isinstance(display, stock.MapDisplay):  # later maps are drawn above earlier ones
+            display.layer = sum(isinstance(d, stock.MapDisplay) for d in self.displays)
         display.attach(self.node)
         self.displays.append(display)
         return display
+
+    # --- tools -------------------------------------------------------------------------
+
+    def set_pose_estimate(self, x: float, y: float, yaw: float) -> Any:
+        """RViz's "2D Pose Estimate": publish ``(x, y)`` m facing ``yaw`` rad in the fixed
+        frame as a ``PoseWithCovarianceStamped`` on the tool's topic (``/initialpose``).
+
+        Returns:
+            The message sent.
+
+        Raises:
+            ViewerError: A coordinate that is not a finite number.
+        """
+        return self.tools.set_pose_estimate(x, y, yaw, self.fixed_frame)
+
+    def send_goal(self, x: float, y: float, yaw: float) -> Any:
+        """RViz's "2D Nav Goal": publish ``(x, y)`` m facing ``yaw`` rad in the fixed frame
+        as a ``PoseStamped`` on the tool's topic (``/move_base_simple/goal``).
+
+        Returns:
+            The message sent.
+
+        Raises:
+            ViewerError: A coordinate that is not a finite number.
+        """
+        return self.tools.send_goal(x, y, yaw, self.fixed_frame)
+
+    def map_extent(self) -> tuple[float, float, float, float] | None:
+        """``(x_min, x_max, y_min, y_max)`` in the fixed frame of the first Map display that
+        has drawn a map (one in the ``map`` colour scheme first), m."""
+        maps = [d for d in self.displays if isinstance(d, stock.MapDisplay) and d.extent]
+        maps.sort(key=lambda d: d.color_scheme != "map")
+        return maps[0].extent if maps else None
 
     # --- drawing -----------------------------------------------------------------------
 
@@ -154,6 +206,7 @@ class RViz:
                         display.update(context)
                     except Exception as error:  # noqa: BLE001 - a display fails alone, as in RViz
                         display.status["Error"] = f"{type(error).__name__}: {error}"
+            self.tools.update(context, self.map_extent())
             self.updates += 1
 
     def spin(self, seconds: float, period: float = 1.0 / 30.0) -> None:
@@ -189,9 +242,10 @@ class RViz:
         return target
 
     def close(self) -> None:
-        """Unsubscribe and shut the node down."""
+        """Unsubscribe, remove the tools' controls and shut the node down."""
         for display in self.displays:
             display.close()
+        self.tools.close()
         self.node.shutdown()
 
 

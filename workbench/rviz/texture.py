@@ -17,22 +17,25 @@ import numpy as np
 
 
 def png_bytes(grey: np.ndarray) -> bytes:
-    """PNG of a greyscale image (uint8, or floats in [0, 1]); row 0 is the image's top."""
+    """PNG of a greyscale (rows, cols) or RGBA (rows, cols, 4) image (uint8, or floats in
+    [0, 1]); row 0 is the image's top."""
     from PIL import Image
 
     if grey.dtype != np.uint8:
         grey = np.clip(grey * 255.0 + 0.5, 0, 255).astype(np.uint8)
-    image = Image.fromarray(np.ascontiguousarray(grey), mode="L")
+    mode = "RGBA" if grey.ndim == 3 else "L"
+    image = Image.fromarray(np.ascontiguousarray(grey), mode=mode)
     out = io.BytesIO()
     image.save(out, format="PNG", compress_level=1)
     return out.getvalue()
 
 
-def textured_quad_gltf(png: bytes, width: float, height: float) -> str:
+def textured_quad_gltf(png: bytes, width: float, height: float, blend: bool = False) -> str:
     """glTF 2.0 text of the rectangle (0, 0)-(width, height) in z = 0 showing ``png``.
 
     The image's first row is drawn at y = height (the rectangle's top), so a
-    grid whose row 0 is at y = 0 should be flipped before it is encoded.
+    grid whose row 0 is at y = 0 should be flipped before it is encoded. With
+    ``blend`` the texture's alpha blends with what is behind (glTF ``BLEND``).
     """
     # glTF is y-up and Drake turns it z-up (a quarter turn about x): the rectangle
     # (x, y) of the z = 0 plane is written as (x, 0, -y).
@@ -57,6 +60,7 @@ def textured_quad_gltf(png: bytes, width: float, height: float) -> str:
                 "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}, "metallicFactor": 0.0},
                 "doubleSided": True,
                 "extensions": {"KHR_materials_unlit": {}},
+                "alphaMode": "BLEND" if blend else "OPAQUE",
             }
         ],
         "extensionsUsed": ["KHR_materials_unlit"],
@@ -79,10 +83,12 @@ def textured_quad_gltf(png: bytes, width: float, height: float) -> str:
     return json.dumps(document)
 
 
-def write_quad(folder: Path, grey: np.ndarray, width: float, height: float) -> Path:
-    """The glTF file of a greyscale grid (row 0 at y = 0), written once per content."""
+def write_quad(
+    folder: Path, grey: np.ndarray, width: float, height: float, blend: bool = False
+) -> Path:
+    """The glTF file of a greyscale or RGBA grid (row 0 at y = 0), written once per content."""
     png = png_bytes(grey[::-1])
-    text = textured_quad_gltf(png, width, height)
+    text = textured_quad_gltf(png, width, height, blend)
     digest = hashlib.sha1(text.encode()).hexdigest()[:16]
     folder.mkdir(parents=True, exist_ok=True)
     path = folder / f"grid_{digest}.gltf"
