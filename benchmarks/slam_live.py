@@ -198,6 +198,21 @@ def map_quality(grid_message: Any) -> dict[str, Any]:
     }
 
 
+def save_final_map(grid_message: Any, name: Path) -> None:
+    """``map_saver -f NAME`` run in NAME's folder, so the YAML names its image relatively."""
+    import os
+
+    from workbench.mapping.map_saver_node import save_map_files
+
+    here = Path.cwd()
+    name.parent.mkdir(parents=True, exist_ok=True)
+    os.chdir(name.parent)
+    try:
+        save_map_files(grid_message, name.name, log=print)
+    finally:
+        os.chdir(here)
+
+
 def grow(mask: np.ndarray) -> np.ndarray:
     """``mask`` dilated by one cell (8-neighbourhood)."""
     out = mask.copy()
@@ -227,6 +242,9 @@ def main(argv: list[str] | None = None) -> int:
         "--max-step-size", type=float, help="physics step, s (default: the world's)"
     )
     parser.add_argument("--out", type=Path, default=HERE / "results" / "slam_live.json")
+    parser.add_argument(
+        "--save-map", type=Path, help="also save the final map as NAME.pgm/NAME.yaml (map_saver)"
+    )
     args = parser.parse_args(argv)
     np.random.seed(args.seed)
     seconds = 60.0 * args.minutes
@@ -239,6 +257,8 @@ def main(argv: list[str] | None = None) -> int:
         run.caught_up()
         run.mapper.update_map()
         quality = map_quality(run.maps[-1])
+        if args.save_map is not None:
+            save_final_map(run.maps[-1], args.save_map)
         counts = {k: getattr(run.mapper, k) for k in ("received", "processed", "dropped")}
     finally:
         run.close()

@@ -8,8 +8,8 @@ are placed by odometry from the last processed one, which costs almost
 nothing. A processed scan is matched against a local map of the last
 keyframes (cached until the keyframes change) starting from the odometry
 prediction. With ``match_covariance`` the match's score-surface covariance
-tells which directions the match pins down: along the others (a corridor's
-axis) the odometry prediction is kept. After enough motion the scan becomes
+tells which directions the match pins down: the pose is the information-weighted
+mean of match and odometry prediction, so along a corridor's axis the odometry wins. After enough motion the scan becomes
 a keyframe, a pose-graph node whose edge to the previous node carries the
 information of odometry and match together; each new keyframe then tries a
 loop closure (:mod:`workbench.mapping.loops`).
@@ -49,17 +49,29 @@ def match_points(scan: Scan, match_range: float) -> np.ndarray:
     return np.stack([r * np.cos(a), r * np.sin(a)], axis=1)
 
 
-def lean_on_odometry(match: np.ndarray, guess: np.ndarray, covariance: np.ndarray) -> np.ndarray:
-    """``match`` with its position along unconstrained directions taken from ``guess``.
+def fuse_with_odometry(
+    match: np.ndarray,
+    match_covariance: np.ndarray,
+    guess: np.ndarray,
+    guess_covariance: np.ndarray,
+) -> np.ndarray:
+    """A scan match's position moved toward the odometry's prediction where the match is
+    less certain than the odometry.
 
-    A direction is unconstrained when the covariance's std dev along it
-    exceeds 1 m (the score surface marks those with a huge variance).
+    Along each principal direction of the match's position covariance whose variance
+    exceeds the odometry's, the position is the variance-weighted mean of the two (a
+    corridor's axis: the odometry; a long wall seen at a slant: in between); along the
+    others, and in heading, the match stands (odometry's systematic errors would leak
+    into a map that a match pins down). Poses and covariances are in the map frame.
     """
-    values, vectors = np.linalg.eigh(covariance[:2, :2])
-    free = vectors[:, values > 1.0]
     out = np.asarray(match, dtype=float).copy()
-    if free.shape[1]:
-        out[:2] += free @ (free.T @ (guess[:2] - match[:2]))
+    values, vectors = np.linalg.eigh(0.5 * (match_covariance[:2, :2] + match_covariance[:2, :2].T))
+    odometry = float(np.linalg.eigvalsh(guess_covariance[:2, :2]).max())
+    weak = values > 2.0 * odometry
+    if weak.any():
+        weights = values[weak] / (values[weak] + odometry)
+        basis = vectors[:, weak]
+        out[:2] += basis @ (weights * (basis.T @ (np.asarray(guess, float)[:2] - out[:2])))
     return out
 
 
@@ -340,7 +352,9 @@ class Slam:
         if matched and result is not None:
             pose = result.pose
             if result.covariance is not None:
-                pose = lean_on_odometry(result.pose, guess, result.covariance)
+                moved = odometry_covariance(delta, cfg.odometry_noise)
+                prior = to_frame(moved, -float(prev_pose[2]))
+                pose = fuse_with_odometry(result.pose, result.covariance, guess, prior)
         last_pose = self.graph.nodes[last]
         rel = between(last_pose, pose)
         moved = np.hypot(rel[0], rel[1]) >= cfg.keyframe_distance
