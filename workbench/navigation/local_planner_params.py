@@ -25,10 +25,10 @@ class ParamReader:
 
     def __init__(self, node: Any, prefix: str) -> None:
         self.node = node
-        self.prefix = prefix.rstrip("/")
+        self.prefix = prefix if prefix == "~" else prefix.rstrip("/")
 
     def key(self, name: str) -> str:
-        return f"{self.prefix}/{name}"
+        return f"~{name}" if self.prefix == "~" else f"{self.prefix}/{name}"
 
     def has(self, name: str) -> bool:
         return bool(self.node.has_param(self.key(name)))
@@ -178,6 +178,7 @@ def trajectory_planner_params(node: Any, prefix: str) -> tuple[RolloutParams, di
         "yaw_goal_tolerance": r.number("yaw_goal_tolerance", 0.05),
         "latch_xy_goal_tolerance": r.flag("latch_xy_goal_tolerance", False),
         "meter_scoring": r.flag("meter_scoring", False),
+        "meter_scoring_set": r.has("meter_scoring"),
         "prune_plan": r.flag("prune_plan", True),
     }
     return params, host

@@ -142,10 +142,15 @@ class TrajectoryPlannerROS(LocalPlannerHost):
         self.rotating_to_goal = False
         log = node.get_logger()
         log.info(f"Sim period is set to {params.sim_period:.2f}")
-        if not self.meter_scoring:
+        if not host["meter_scoring_set"]:
             log.warn(
                 "Trajectory Rollout planner initialized with param meter_scoring not set. Set it to true to "
-                "make your settings robust against changes of costmap resolution."
+                "make your settins robust against changes of costmap resolution."
+            )
+        elif not self.meter_scoring:
+            log.warn(
+                "Trajectory Rollout planner initialized with param meter_scoring set to false. Set it to true "
+                "to make your settins robust against changes of costmap resolution."
             )
 
     def on_new_plan(self) -> None:
