@@ -159,3 +159,29 @@ def test_make_plan_and_clear_costmaps(nav: Navigation) -> None:
         2.0,
     )  # goal appended
     nav.user.create_client("/move_base/clear_costmaps", Empty).call(Empty.Request())
+
+
+DWA = {
+    "base_local_planner": "dwa_local_planner/DWAPlannerROS",
+    "DWAPlannerROS/max_vel_x": 0.4,
+    "DWAPlannerROS/max_vel_trans": 0.4,
+    "DWAPlannerROS/max_vel_y": 0.0,
+    "DWAPlannerROS/min_vel_y": 0.0,
+    "DWAPlannerROS/vy_samples": 1,
+    "DWAPlannerROS/vx_samples": 10,
+    "DWAPlannerROS/acc_lim_x": 1.0,
+    "DWAPlannerROS/acc_lim_theta": 2.0,
+    "DWAPlannerROS/xy_goal_tolerance": 0.15,
+    "DWAPlannerROS/yaw_goal_tolerance": 0.2,
+}
+
+
+def test_dwa_local_planner_reaches_the_goal() -> None:
+    nav = Navigation(**DWA)
+    assert type(nav.move_base.controller).__name__ == "DWAPlannerROS"
+    nav.client.send_goal(nav.goal(5.0, 2.0, math.pi / 2))
+    assert nav.run_until_done(90.0), nav.text()
+    assert nav.client.get_state() == SUCCEEDED
+    assert "Goal reached" in [m for _, m in nav.lines]
+    assert math.hypot(nav.robot.pose[0] - 5.0, nav.robot.pose[1] - 2.0) <= 0.2
+    assert nav.robot.closest > nav.robot.radius

@@ -129,7 +129,7 @@ class TrajectoryPlannerROS(LocalPlannerHost):
     """
 
     def __init__(self, node: Any, name: str, costmap_ros: Any, tf_buffer: Any) -> None:
-        params, host = trajectory_planner_params(node, f"~{name}")
+        params, host = self.read_params(node, name)
         super().__init__(node, name, costmap_ros, tf_buffer)
         self.params: RolloutParams = params
         self.xy_tolerance = host["xy_goal_tolerance"]
@@ -140,8 +140,16 @@ class TrajectoryPlannerROS(LocalPlannerHost):
         self.planner = TrajectoryPlanner(params, np.asarray(costmap_ros.footprint, dtype=float))
         self.xy_latched = False
         self.rotating_to_goal = False
+        self.announce(node, host)
+
+    def read_params(self, node: Any, name: str) -> tuple[RolloutParams, dict[str, Any]]:
+        """The planner's parameters under ``~<name>``."""
+        return trajectory_planner_params(node, f"~{name}")
+
+    def announce(self, node: Any, host: dict[str, Any]) -> None:
+        """TrajectoryPlannerROS's start-up lines (control period, ``meter_scoring``)."""
         log = node.get_logger()
-        log.info(f"Sim period is set to {params.sim_period:.2f}")
+        log.info(f"Sim period is set to {self.params.sim_period:.2f}")
         if not host["meter_scoring_set"]:
             log.warn(
                 "Trajectory Rollout planner initialized with param meter_scoring not set. Set it to true to "
@@ -209,11 +217,23 @@ class TrajectoryPlannerROS(LocalPlannerHost):
             self.rotating_to_goal = True
             return self._rotate_to_goal(grid, maps, pose, vel, goal[2], scales)
         maps = self._maps(grid, pose, window)
+        self.publish_path(self.global_pub, window)
+        return self.drive(grid, maps, pose, vel, goal, scales)
+
+    def drive(
+        self,
+        grid: CostGrid,
+        maps: Any,
+        pose: np.ndarray,
+        vel: np.ndarray,
+        goal: np.ndarray,
+        scales: tuple,
+    ) -> tuple[bool, tuple[float, float, float]]:
+        """The best trajectory's command (``findBestPath``); failure when none is legal."""
         dist = math.hypot(goal[0] - pose[0], goal[1] - pose[1])
         choice = self.planner.choose(grid, maps, pose, vel, scales, goal_dist=dist)
-        self.publish_path(self.global_pub, window)
         if choice.cost < 0:
-            self.publish_path(self.local_pub, window[:0])
+            self.publish_path(self.local_pub, choice.poses[:0])
             return False, (0.0, 0.0, 0.0)
         self.publish_path(self.local_pub, choice.poses)
         return True, (choice.vx, choice.vy, choice.vtheta)

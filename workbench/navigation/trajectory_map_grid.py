@@ -30,6 +30,7 @@ class DistanceMaps:
     goal: np.ndarray
     goal_xy: tuple[float, float] | None  # the local goal (world), None without a plan cell
     impossible: float  # the cell count: a distance at or above it is no way through
+    within_robot: np.ndarray | None = None  # cells under the robot (never obstacles)
 
 
 def densify(plan: np.ndarray, resolution: float) -> np.ndarray:
@@ -128,4 +129,4 @@ def distance_maps(
         mx, my = goal_seed[0]
         goal_xy = (origin[0] + (mx + 0.5) * resolution, origin[1] + (my + 0.5) * resolution)
     goal = spread(goal_seed, passable, cells_count, cells_count + 1.0)
-    return DistanceMaps(path, goal, goal_xy, cells_count)
+    return DistanceMaps(path, goal, goal_xy, cells_count, within_robot)
