@@ -72,6 +72,14 @@ PARAMS: dict[str, Any] = {
 }
 
 
+def param_node(**params: Any) -> Node:
+    """A ``/move_base`` node on a fresh stepped bus with ``params`` under ``/move_base``."""
+    bus = Bus(threaded=False)
+    for key, value in params.items():
+        bus.params.set(f"/move_base/{key}", value)
+    return Node("move_base", bus=bus)
+
+
 class Navigation:
     """A stepped bus with the robot, move_base and an action client, plus the log lines."""
 

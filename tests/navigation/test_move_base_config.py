@@ -17,8 +17,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from move_base_setup import param_node
 
-from workbench.bus import Bus, Node
 from workbench.navigation.dwa_planner_ros import velocity_samples
 from workbench.navigation.local_planner_params import (
     PlannerParameterError,
@@ -30,15 +30,8 @@ from workbench.navigation.move_base_params import MoveBaseError, read_params
 REPO = Path(__file__).resolve().parents[2]
 
 
-def node_with(**params) -> Node:
-    bus = Bus(threaded=False)
-    for key, value in params.items():
-        bus.params.set(f"/move_base/{key}", value)
-    return Node("move_base", bus=bus)
-
-
 def test_defaults_and_recovery_order() -> None:
-    node = node_with()
+    node = param_node()
     p = read_params(node)
     assert (p.base_global_planner, p.base_local_planner) == (
         "navfn/NavfnROS",
@@ -59,7 +52,7 @@ def test_defaults_and_recovery_order() -> None:
     ]
     assert node.get_param("~conservative_reset/reset_distance") == 3.0
     assert node.get_param("~aggressive_reset/reset_distance") == pytest.approx(4 * 0.46)
-    no_rotation = read_params(node_with(clearing_rotation_allowed=False))
+    no_rotation = read_params(param_node(clearing_rotation_allowed=False))
     assert [n for n, _ in no_rotation.recovery_behaviors] == [
         "conservative_reset",
         "aggressive_reset",
@@ -67,7 +60,7 @@ def test_defaults_and_recovery_order() -> None:
 
 
 def test_bare_planner_name_is_accepted_with_a_warning() -> None:
-    node = node_with(base_local_planner="TrajectoryPlannerROS")
+    node = param_node(base_local_planner="TrajectoryPlannerROS")
     lines = []
     node.create_subscription("/rosout", "rosgraph_msgs/Log", lambda m: lines.append(m.msg), 0)
     assert read_params(node).base_local_planner == "base_local_planner/TrajectoryPlannerROS"
@@ -80,7 +73,7 @@ def test_bare_planner_name_is_accepted_with_a_warning() -> None:
 
 def test_unknown_planner_is_one_line() -> None:
     with pytest.raises(MoveBaseError) as error:
-        read_params(node_with(base_local_planner="teb_local_planner/TebLocalPlannerROS"))
+        read_params(param_node(base_local_planner="teb_local_planner/TebLocalPlannerROS"))
     line = error.value.one_line()
     assert (
         "\n" not in line and "/move_base/base_local_planner" in line and "teb_local_planner" in line
@@ -91,19 +84,19 @@ def test_wrong_types_name_the_parameter() -> None:
     with pytest.raises(
         PlannerParameterError, match="/move_base/controller_frequency must be positive"
     ):
-        read_params(node_with(controller_frequency=0.0))
+        read_params(param_node(controller_frequency=0.0))
     with pytest.raises(
         PlannerParameterError, match="/move_base/TrajectoryPlannerROS/max_vel_x must be a number"
     ):
         trajectory_planner_params(
-            node_with(**{"TrajectoryPlannerROS/max_vel_x": "fast"}), "~TrajectoryPlannerROS"
+            param_node(**{"TrajectoryPlannerROS/max_vel_x": "fast"}), "~TrajectoryPlannerROS"
         )
     with pytest.raises(MoveBaseError, match=r"recovery_behaviors\[0\]"):
-        read_params(node_with(recovery_behaviors=[{"name": "x", "type": "nope/Nope"}]))
+        read_params(param_node(recovery_behaviors=[{"name": "x", "type": "nope/Nope"}]))
 
 
 def test_old_parameter_names_and_controller_frequency() -> None:
-    node = node_with(
+    node = param_node(
         controller_frequency=8.0,
         **{
             "TrajectoryPlannerROS/pdist_scale": 0.9,

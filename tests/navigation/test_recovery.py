@@ -15,8 +15,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import pytest
+from move_base_setup import param_node
 
-from workbench.bus import Bus, Node
 from workbench.navigation.costs import LETHAL_OBSTACLE
 from workbench.navigation.recovery import ClearCostmapRecovery, RotateRecovery
 
@@ -68,16 +68,9 @@ class FakeCostmap:
         self.cleared.append("update")
 
 
-def make_node(**params) -> Node:
-    bus = Bus(threaded=False)
-    for key, value in params.items():
-        bus.params.set(f"/move_base/{key}", value)
-    return Node("move_base", bus=bus)
-
-
 def test_clear_costmap_clears_the_named_layers_of_both_maps() -> None:
     glob, loc = FakeCostmap(), FakeCostmap()
-    node = make_node(**{"conservative_reset/reset_distance": 3.0})
+    node = param_node(**{"conservative_reset/reset_distance": 3.0})
     rec = ClearCostmapRecovery(node, "conservative_reset", glob, loc)
     rec.start()
     assert rec.step() == (True, None)
@@ -86,7 +79,7 @@ def test_clear_costmap_clears_the_named_layers_of_both_maps() -> None:
 
 def test_clear_costmap_options() -> None:
     glob, loc = FakeCostmap(), FakeCostmap()
-    node = make_node(
+    node = param_node(
         **{
             "r/affected_maps": "local",
             "r/layer_names": ["obstacle_layer"],
@@ -97,7 +90,7 @@ def test_clear_costmap_options() -> None:
     ClearCostmapRecovery(node, "r", glob, loc).start()
     assert glob.cleared == [] and loc.cleared == [(0.5, ["obstacle_layer"]), "update"]
     lines = []
-    node2 = make_node(**{"r/affected_maps": "everything"})
+    node2 = param_node(**{"r/affected_maps": "everything"})
     node2.create_subscription("/rosout", "rosgraph_msgs/Log", lambda m: lines.append(m.msg), 0)
     assert ClearCostmapRecovery(node2, "r", glob, loc).affected_maps == "both"
     node2.bus.spin_once(0.0)
@@ -106,7 +99,7 @@ def test_clear_costmap_options() -> None:
 
 def test_rotate_recovery_turns_a_full_circle() -> None:
     local = FakeCostmap()
-    node = make_node(
+    node = param_node(
         **{"TrajectoryPlannerROS/max_rotational_vel": 1.0, "TrajectoryPlannerROS/acc_lim_th": 3.2}
     )
     rec = RotateRecovery(node, "rotate_recovery", local, local)
@@ -130,7 +123,7 @@ def test_rotate_recovery_refuses_a_collision() -> None:
         LETHAL_OBSTACLE  # beside the long robot: turning sweeps its nose into it
     )
     lines = []
-    node = make_node()
+    node = param_node()
     node.create_subscription("/rosout", "rosgraph_msgs/Log", lambda m: lines.append(m.msg), 0)
     rec = RotateRecovery(node, "rotate_recovery", local, local)
     rec.start()
