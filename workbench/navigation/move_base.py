@@ -275,11 +275,10 @@ class MoveBase:
     def _execute_cycle(self) -> None:
         now = self._now()
         pose = self._feedback()
-        moved = (
+        if (
             pose is not None
             and math.dist(pose[:2], self.oscillation_pose) >= self.p.oscillation_distance
-        )
-        if moved:
+        ):
             self.last_oscillation_reset = now
             self.oscillation_pose = pose[:2]
             if self.recovery_trigger == OSCILLATION_R:

@@ -102,7 +102,7 @@ class RotateRecovery:
 
     def start(self) -> None:
         self.node.get_logger().warn("Rotate recovery behavior started.")
-        self.last_yaw: float | None = None
+        self.last_yaw = None
         self.turned = 0.0
 
     def step(self) -> tuple[bool, tuple[float, float, float] | None]:
