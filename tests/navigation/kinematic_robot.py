@@ -97,6 +97,10 @@ class KinematicRobot:
         self.cmd = np.array([msg.linear.x, msg.linear.y, msg.angular.z], dtype=float)
         self.cmds.append(tuple(self.cmd))
 
+    def add_segments(self, segments: np.ndarray) -> None:
+        """Put more walls into the world (seen by the laser from now on; not on the map)."""
+        self.segments = np.concatenate([self.segments, segments])
+
     def wall_distance(self) -> float:
         a, b = self.segments[:, 0], self.segments[:, 1]
         d = b - a

@@ -185,3 +185,39 @@ def test_dwa_local_planner_reaches_the_goal() -> None:
     assert "Goal reached" in [m for _, m in nav.lines]
     assert math.hypot(nav.robot.pose[0] - 5.0, nav.robot.pose[1] - 2.0) <= 0.2
     assert nav.robot.closest > nav.robot.radius
+
+
+def test_robot_boxed_in_by_a_new_obstacle_is_aborted_and_stopped(nav: Navigation) -> None:
+    from workbench.mapping.simulate import box_segments
+
+    nav.client.send_goal(nav.goal(5.0, 2.0))
+    nav.clock.run(nav.robot, 1.0)
+    x, y, _ = nav.robot.pose
+    nav.robot.add_segments(
+        box_segments(x - 0.3, y - 0.3, x + 0.3, y + 0.3)
+    )  # walls appear around it
+    assert nav.run_until_done(120.0), nav.text()
+    assert nav.client.get_state() == ABORTED
+    assert (
+        nav.client.get_goal_status_text()
+        == "Failed to find a valid control. Even after executing recovery behaviors."
+    )
+    assert (
+        "Aborting because a valid control could not be found. Even after executing all recovery behaviors"
+        in nav.text()
+    )
+    assert nav.robot.cmds[-1] == (0.0, 0.0, 0.0)
+
+
+def test_oscillation_timeout_aborts(nav: Navigation) -> None:
+    nav.move_base.p.oscillation_timeout = 1.0
+    nav.move_base.p.oscillation_distance = 50.0  # no progress counts: the timeout must fire
+    nav.move_base.p.recovery_behavior_enabled = False
+    nav.client.send_goal(nav.goal(5.0, 2.0))
+    assert nav.run_until_done(10.0), nav.text()
+    assert nav.client.get_state() == ABORTED
+    assert (
+        nav.client.get_goal_status_text()
+        == "Robot is oscillating. Even after executing recovery behaviors."
+    )
+    assert "Aborting because the robot appears to be oscillating over and over" in nav.text()
