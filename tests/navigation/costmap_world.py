@@ -100,3 +100,41 @@ class World:
         msg.range_max = range_max
         msg.ranges = [float(r) for r in ranges]
         return msg
+
+
+#: The lab's global costmap, in pre-Hydro keys (costmap_common_params.yaml loaded into
+#: global_costmap, then global_costmap_params.yaml).
+GLOBAL_PARAMS = {
+    "obstacle_range": 2.5,
+    "raytrace_range": 3.0,
+    "footprint": [[0.2, 0.2], [-0.2, 0.2], [-0.2, -0.2], [0.2, -0.2]],
+    "inflation_radius": 0.55,
+    "observation_sources": "laser_scan_sensor",
+    "laser_scan_sensor": {
+        "sensor_frame": "base_scan",
+        "data_type": "LaserScan",
+        "topic": "scan",
+        "marking": True,
+        "clearing": True,
+    },
+    "global_frame": "map",
+    "robot_base_frame": "base_link",
+    "update_frequency": 5.0,
+    "static_map": True,
+}
+
+
+def set_params(bus, namespace: str, params: dict) -> None:
+    for key, value in params.items():
+        bus.params.set(f"{namespace}/{key}", value)
+
+
+def wait_for(predicate, timeout: float = 10.0) -> bool:
+    import time
+
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        if predicate():
+            return True
+        time.sleep(0.01)
+    return bool(predicate())

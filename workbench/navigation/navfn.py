@@ -21,6 +21,7 @@ as navfn ignores it).
 
 from __future__ import annotations
 
+import hashlib
 import math
 import threading
 import time
@@ -31,8 +32,14 @@ import numpy as np
 from workbench.navigation.astar_baseline import astar
 from workbench.navigation.costmap_grid import Costmap2D
 from workbench.navigation.costmap_params import Params
-from workbench.navigation.costs import FREE_SPACE
-from workbench.navigation.navfn_grid import POT_HIGH, cell_costs, path_cells, potential
+from workbench.navigation.navfn_grid import (
+    COST_NEUTRAL,
+    POT_HIGH,
+    cell_costs,
+    grid_graph,
+    path_cells,
+    potential,
+)
 
 OFF_MAP_GOAL = (
     "The goal sent to the navfn planner is off the global costmap. Planning will always fail to "
@@ -60,19 +67,61 @@ def goal_window(
 
 
 def _best_goal(
-    costmap: Costmap2D, pot: np.ndarray, goal: tuple[float, float], tolerance: float
-) -> tuple[float, float, int] | None:
+    costmap: Costmap2D,
+    pot: np.ndarray,
+    passable: np.ndarray,
+    goal: tuple[float, float],
+    tolerance: float,
+) -> tuple[tuple[float, float, int] | None, bool]:
+    """The window point nearest the goal with a potential, and whether that is certain.
+
+    With a potential spread only up to a limit, a passable window point nearer the goal
+    than the one found (or any passable one when none was found) may lie beyond the
+    limit: then the answer is not certain and the potential must spread further.
+    """
     wx, wy = goal_window(goal, tolerance, costmap.resolution)
     points = np.column_stack((wx.ravel(), wy.ravel()))
     mx, my, inside = costmap.world_to_map_array(points)
+    index = my * costmap.size_x + mx
     values = np.full(points.shape[0], np.inf)
-    values[inside] = pot[my[inside] * costmap.size_x + mx[inside]]
+    values[inside] = pot[index[inside]]
+    open_ = np.zeros(points.shape[0], bool)
+    open_[inside] = passable[index[inside]]
     sdist = (points[:, 0] - goal[0]) ** 2 + (points[:, 1] - goal[1]) ** 2
     legal = values < POT_HIGH
+    unresolved = open_ & ~legal
     if not legal.any():
-        return None
+        return None, not unresolved.any()
     i = int(np.argmin(np.where(legal, sdist, np.inf)))
-    return float(points[i, 0]), float(points[i, 1]), int(my[i] * costmap.size_x + mx[i])
+    certain = not (unresolved & (sdist <= sdist[i])).any()
+    return (float(points[i, 0]), float(points[i, 1]), int(index[i])), certain
+
+
+def _spread(
+    costmap: Costmap2D,
+    cell_cost: np.ndarray,
+    graph: Any,
+    start: tuple[int, int],
+    goal: tuple[float, float],
+    tolerance: float,
+) -> tuple[tuple[float, float, int] | None, np.ndarray]:
+    """Spread the potential until the goal window's answer is certain (navfn, too, stops
+    spreading once it reached the goal); returns the best point and the predecessors.
+
+    The first limit is twice the cost of a straight line of free cells to the far side of
+    the goal window; each retry quadruples it, the last spreads over the whole grid.
+    """
+    passable = np.isfinite(cell_cost).ravel()
+    sx, sy = costmap.map_to_world(*start)
+    cells = (math.hypot(goal[0] - sx, goal[1] - sy) + 1.5 * tolerance) / costmap.resolution
+    limit = 2.0 * COST_NEUTRAL * (cells + 10.0)
+    full = COST_NEUTRAL * 4.0 * (costmap.size_x + costmap.size_y)
+    while True:
+        pot, pred = potential(cell_cost, start, limit, graph)
+        best, certain = _best_goal(costmap, pot, passable, goal, tolerance)
+        if certain or math.isinf(limit):
+            return best, pred
+        limit = limit * 4.0 if limit < full else math.inf
 
 
 def navfn_plan(
@@ -104,9 +153,9 @@ def navfn_plan(
     goal_cell = costmap.world_to_map(*goal)
     if goal_cell is None and tolerance <= 0.0:
         return []
-    costs = costmap.costs.copy()
-    costs[start_cell[1], start_cell[0]] = FREE_SPACE  # clearRobotCell
-    cell_cost = cell_costs(costs, allow_unknown)
+    # navfn clears the robot's cell (clearRobotCell); a step costs the cell it enters, so
+    # the start's own cost never counts and the costmap's costs are used as they are
+    cell_cost = cell_costs(costmap.costs, allow_unknown)
     size_x = costmap.size_x
     if not use_dijkstra and tolerance <= 0.0 and goal_cell is not None:
         cells, cost = astar(cell_cost, start_cell, goal_cell)
@@ -114,8 +163,13 @@ def navfn_plan(
             return []
         end: tuple[float, float] = (float(goal[0]), float(goal[1]))
     else:
-        pot, pred = potential(cell_cost, start_cell)
-        best = _best_goal(costmap, pot, goal, tolerance)
+        key = (
+            costmap.costs.shape,
+            allow_unknown,
+            hashlib.blake2b(costmap.costs.tobytes(), digest_size=16).digest(),
+        )
+        graph = grid_graph(cell_cost, key)
+        best, pred = _spread(costmap, cell_cost, graph, start_cell, goal, tolerance)
         if best is None:
             return []
         cells = path_cells(pred, best[2], size_x)

@@ -15,6 +15,10 @@ from __future__ import annotations
 
 import functools
 import math
+import threading
+from collections import OrderedDict
+from collections.abc import Hashable
+from typing import Any
 
 import numpy as np
 
@@ -44,76 +48,129 @@ def cell_costs(costs: np.ndarray, allow_unknown: bool = True) -> np.ndarray:
 
 
 @functools.lru_cache(maxsize=8)
-def grid_edges(size_y: int, size_x: int) -> tuple[np.ndarray, ...]:
-    """The 8-connected edges of a grid, grouped by source cell.
+def grid_edges(size_y: int, size_x: int) -> tuple[np.ndarray, np.ndarray]:
+    """The 8-connected edges of a grid padded by one cell on each side.
+
+    Every padded cell has 8 edge slots, in :data:`OFFSETS` order, so the CSR row pointers
+    are ``0, 8, 16, ...`` and the weights of one slot are a shifted slice of the costs.
 
     Returns:
-        ``(indptr, target, length, side_a, side_b)``: CSR row pointers, each edge's
-        target cell, its length in cells, and for diagonal edges the two cells beside
-        it (for straight edges both are the target).
+        ``(indptr, indices)`` of the padded grid's ``(size_y + 2) * (size_x + 2)`` cells
+        (targets beyond the padding are clipped; their weights are infinite).
     """
-    n = size_x * size_y
-    index = np.arange(n).reshape(size_y, size_x)
-    src, dst, length, side_a, side_b = [], [], [], [], []
-    for dy, dx in OFFSETS:
-        ys = slice(max(0, -dy), size_y - max(0, dy))
-        xs = slice(max(0, -dx), size_x - max(0, dx))
-        yt = slice(max(0, dy), size_y - max(0, -dy))
-        xt = slice(max(0, dx), size_x - max(0, -dx))
-        s = index[ys, xs].ravel()
-        t = index[yt, xt].ravel()
-        src.append(s)
-        dst.append(t)
-        length.append(np.full(s.size, math.hypot(dx, dy)))
+    width = size_x + 2
+    n = width * (size_y + 2)
+    shifts = np.array([dy * width + dx for dy, dx in OFFSETS])
+    indices = np.clip(np.arange(n)[:, None] + shifts[None, :], 0, n - 1).ravel()
+    indptr = np.arange(0, 8 * n + 1, 8)
+    indices.setflags(write=False)
+    indptr.setflags(write=False)
+    return indptr, indices
+
+
+def _shifted(values: np.ndarray, shift: int) -> np.ndarray:
+    """``values[i + shift]`` for every ``i`` (``inf`` beyond the ends)."""
+    out = np.empty_like(values)
+    n = values.size
+    if shift >= 0:
+        out[: n - shift] = values[shift:]
+        out[n - shift :] = np.inf
+    else:
+        out[-shift:] = values[:shift]
+        out[:-shift] = np.inf
+    return out
+
+
+def edge_weights(cell_cost: np.ndarray) -> np.ndarray:
+    """The weights of :func:`grid_edges`' slots: step length times the entered cell's cost.
+
+    A diagonal step is infinite unless both cells beside it are passable.
+    """
+    size_y, size_x = cell_cost.shape
+    width = size_x + 2
+    padded = np.pad(cell_cost, 1, constant_values=np.inf).ravel()
+    diagonal = padded * math.sqrt(2.0)
+    blocked = np.where(np.isfinite(padded), 0.0, np.inf)
+    weights = np.empty((padded.size, 8))
+    for k, (dy, dx) in enumerate(OFFSETS):
         if dx and dy:
-            side_a.append(s + dx)  # the cell beside the step along x
-            side_b.append(s + dy * size_x)  # and along y
+            column = _shifted(diagonal, dy * width + dx)
+            column += _shifted(blocked, dx)
+            column += _shifted(blocked, dy * width)
         else:
-            side_a.append(t)
-            side_b.append(t)
-    src_all = np.concatenate(src)
-    order = np.argsort(src_all, kind="stable")
-    indptr = np.concatenate(([0], np.cumsum(np.bincount(src_all, minlength=n))))
-    arrays = (
-        indptr,
-        np.concatenate(dst)[order],
-        np.concatenate(length)[order],
-        np.concatenate(side_a)[order],
-        np.concatenate(side_b)[order],
-    )
-    for a in arrays:
-        a.setflags(write=False)
-    return arrays
+            column = _shifted(padded, dy * width + dx)
+        weights[:, k] = column
+    return weights.ravel()
 
 
-def potential(cell_cost: np.ndarray, start: tuple[int, int]) -> tuple[np.ndarray, np.ndarray]:
+#: Graphs of recent costmaps, by content: a costmap that did not change is not rebuilt.
+_GRAPHS: OrderedDict[Hashable, Any] = OrderedDict()
+_GRAPHS_KEPT = 4
+_GRAPHS_LOCK = threading.Lock()
+
+
+def grid_graph(cell_cost: np.ndarray, key: Hashable | None = None) -> Any:
+    """The CSR graph of :func:`grid_edges` and :func:`edge_weights` (cached under ``key``)."""
+    from scipy.sparse import csr_matrix
+
+    if key is not None:
+        with _GRAPHS_LOCK:
+            graph = _GRAPHS.get(key)
+            if graph is not None:
+                _GRAPHS.move_to_end(key)
+                return graph
+    indptr, indices = grid_edges(*cell_cost.shape)
+    n = indptr.size - 1
+    graph = csr_matrix((edge_weights(cell_cost), indices, indptr), shape=(n, n))
+    if key is not None:
+        with _GRAPHS_LOCK:
+            _GRAPHS[key] = graph
+            while len(_GRAPHS) > _GRAPHS_KEPT:
+                _GRAPHS.popitem(last=False)
+    return graph
+
+
+def clear_graph_cache() -> None:
+    """Forget the cached graphs."""
+    with _GRAPHS_LOCK:
+        _GRAPHS.clear()
+
+
+def potential(
+    cell_cost: np.ndarray,
+    start: tuple[int, int],
+    limit: float = np.inf,
+    graph: Any = None,
+) -> tuple[np.ndarray, np.ndarray]:
     """The potential from ``start`` = ``(mx, my)`` over the grid, and each cell's predecessor.
 
     Args:
         cell_cost: :func:`cell_costs` of the grid, shape ``(size_y, size_x)``.
-        start: The start cell; it is passable whatever its cost.
+        start: The start cell; it is passable whatever its cost (a step's cost is the
+            cell it enters, so the start's own cost never counts).
+        limit: Stop spreading beyond this potential (cells past it stay at ``POT_HIGH``).
+        graph: :func:`grid_graph` of ``cell_cost`` if already built.
 
     Returns:
-        ``(potential, predecessor)``, flat over cells: the cost of the cheapest path
-        (:data:`POT_HIGH` where unreachable) and the previous cell on it (-9999 at the
-        start and where unreachable).
+        ``(potential, predecessor)``, flat over cells (``my * size_x + mx``): the cost of
+        the cheapest path (:data:`POT_HIGH` where unreachable) and the previous cell on it
+        (negative at the start and where unreachable).
     """
-    from scipy.sparse import csr_matrix
     from scipy.sparse.csgraph import dijkstra
 
     size_y, size_x = cell_cost.shape
-    indptr, target, length, side_a, side_b = grid_edges(size_y, size_x)
-    flat = cell_cost.ravel()
-    weight = length * flat[target]
-    diagonal = side_a != target
-    blocked = diagonal & ~(np.isfinite(flat[side_a]) & np.isfinite(flat[side_b]))
-    weight[blocked] = np.inf
-    n = size_x * size_y
-    graph = csr_matrix((weight, target, indptr), shape=(n, n))
-    start_index = start[1] * size_x + start[0]
-    dist, pred = dijkstra(graph, directed=True, indices=start_index, return_predecessors=True)
-    dist = np.where(np.isfinite(dist), dist, POT_HIGH)
-    return dist, pred
+    width = size_x + 2
+    if graph is None:
+        graph = grid_graph(cell_cost)
+    source = (start[1] + 1) * width + start[0] + 1
+    dist, pred = dijkstra(
+        graph, directed=True, indices=source, return_predecessors=True, limit=limit
+    )
+    dist = dist.reshape(size_y + 2, width)[1:-1, 1:-1].ravel()
+    pred = pred.reshape(size_y + 2, width)[1:-1, 1:-1].ravel()
+    row, column = np.divmod(pred, width)
+    pred = np.where(pred >= 0, (row - 1) * size_x + column - 1, -9999)
+    return np.where(np.isfinite(dist), dist, POT_HIGH), pred
 
 
 def path_cells(predecessor: np.ndarray, goal_index: int, size_x: int) -> list[tuple[int, int]]:
@@ -134,6 +191,9 @@ __all__ = [
     "OFFSETS",
     "POT_HIGH",
     "cell_costs",
+    "clear_graph_cache",
+    "edge_weights",
+    "grid_graph",
     "grid_edges",
     "path_cells",
     "potential",
