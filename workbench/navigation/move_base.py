@@ -506,8 +506,13 @@ class MoveBase:
 
     def shutdown(self) -> None:
         """Stop the loop and the costmaps; command zero."""
+        import contextlib
+
+        from workbench.bus.errors import ShutdownError
+
         if self.timer is not None:
             self.timer.shutdown()
-        self.publish_zero_velocity()
+        with contextlib.suppress(ShutdownError):  # the node went first (SIGINT): no one listens
+            self.publish_zero_velocity()
         self.global_costmap.shutdown()
         self.local_costmap.shutdown()
