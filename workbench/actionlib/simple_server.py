@@ -52,8 +52,6 @@ class SimpleActionServer:
         self.execute_cb = execute_cb
         self.goal_cb = goal_cb
         self.preempt_cb = preempt_cb
-        self.lock = threading.RLock()
-        self.wake = threading.Condition(self.lock)
         self.current: ServerGoalHandle | None = None
         self.next: ServerGoalHandle | None = None
         self.new_goal = False
@@ -62,6 +60,10 @@ class SimpleActionServer:
         self._stop = False
         self._thread: threading.Thread | None = None
         self.server = ActionServer(node, ns, action_type, self._on_goal, self._on_cancel, False)
+        # One lock with the action server (actionlib takes the server's lock first): goal
+        # arrival and accepting a goal take the two in opposite orders otherwise.
+        self.lock = self.server.lock
+        self.wake = threading.Condition(self.lock)
         node.on_shutdown(self.shutdown)
         if auto_start:
             self.start()
