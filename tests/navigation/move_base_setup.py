@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
 from kinematic_robot import KinematicRobot, SimClock
 
 from workbench.actionlib import SimpleActionClient
@@ -70,6 +72,16 @@ PARAMS: dict[str, Any] = {
     "TrajectoryPlannerROS/xy_goal_tolerance": 0.15,
     "TrajectoryPlannerROS/yaw_goal_tolerance": 0.2,
 }
+
+
+@dataclass
+class GridSnapshot:
+    """What ``CostmapROS.costmap()`` returns, as far as the planners read it (4 x 4 m at 5 cm)."""
+
+    costs: np.ndarray
+    resolution: float = 0.05
+    origin_x: float = -2.0
+    origin_y: float = -2.0
 
 
 def param_node(**params: Any) -> Node:

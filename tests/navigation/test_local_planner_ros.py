@@ -15,19 +15,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import pytest
-from move_base_setup import param_node
+from move_base_setup import GridSnapshot, param_node
 
 from workbench.msgs.geometry_msgs import PoseStamped
 from workbench.msgs.nav_msgs import Odometry
 from workbench.navigation.local_planner_ros import TrajectoryPlannerROS
-
-
-@dataclass
-class _Grid:
-    costs: np.ndarray
-    resolution: float = 0.05
-    origin_x: float = -2.0
-    origin_y: float = -2.0
 
 
 @dataclass
@@ -42,7 +34,7 @@ class LocalCostmap:
         return self.pose
 
     def costmap(self):
-        return _Grid(np.zeros((80, 80), dtype=np.uint8))
+        return GridSnapshot(np.zeros((80, 80), dtype=np.uint8))
 
 
 def plan(points, yaw: float = 0.0) -> list[PoseStamped]:

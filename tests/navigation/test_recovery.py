@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import pytest
-from move_base_setup import param_node
+from move_base_setup import GridSnapshot, param_node
 
 from workbench.navigation.costs import LETHAL_OBSTACLE
 from workbench.navigation.recovery import ClearCostmapRecovery, RotateRecovery
@@ -29,14 +29,6 @@ class _Layer:
 @dataclass
 class _Layered:
     layers: list
-
-
-@dataclass
-class _Grid:
-    costs: np.ndarray
-    resolution: float = 0.05
-    origin_x: float = -2.0
-    origin_y: float = -2.0
 
 
 @dataclass
@@ -59,7 +51,7 @@ class FakeCostmap:
         return self.pose
 
     def costmap(self):
-        return _Grid(self.costs)
+        return GridSnapshot(self.costs)
 
     def clear_outside(self, radius, layers):
         self.cleared.append((radius, list(layers)))
