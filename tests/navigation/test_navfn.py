@@ -1,0 +1,136 @@
+"""navfn's planning on small grids: costs, obstacles, unknown space, the goal tolerance
+search of NavfnROS::makePlan, and the baseline A* finding paths of the same cost."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from workbench.navigation.astar_baseline import astar
+from workbench.navigation.costmap_grid import Costmap2D
+from workbench.navigation.navfn import goal_window, navfn_plan, path_length
+from workbench.navigation.navfn_grid import POT_HIGH, cell_costs, path_cells, potential
+
+
+def free(size_x: int = 20, size_y: int = 10) -> Costmap2D:
+    return Costmap2D(np.zeros((size_y, size_x), np.uint8), 0.1, 0.0, 0.0, "map")
+
+
+def path_cost(cells, cost) -> float:
+    return sum(
+        math.hypot(b[0] - a[0], b[1] - a[1]) * cost[b[1], b[0]]
+        for a, b in zip(cells[:-1], cells[1:], strict=True)
+    )
+
+
+def test_navfn_cell_costs():
+    costs = np.array([[0, 1, 100, 252, 253, 254, 255]] * 3, np.uint8)
+    costs = np.pad(costs, 1)  # the outer ring is always an obstacle
+    c = cell_costs(costs, allow_unknown=True)
+    # 50 + 0.8 c, truncated, at most 253; 253 and 254 obstacles; unknown 253 when allowed
+    assert c[1, 1:8].tolist() == [50, 50, 130, 251, math.inf, math.inf, 253]
+    assert cell_costs(costs, allow_unknown=False)[1, 7] == math.inf
+    assert np.isinf(c[0]).all() and np.isinf(c[:, 0]).all() and np.isinf(c[:, -1]).all()
+
+
+def test_a_straight_plan_runs_through_cell_centres_to_the_goal():
+    path = navfn_plan(free(), (0.55, 0.55), (1.52, 0.57))
+    assert path[0] == pytest.approx((0.55, 0.55))
+    assert path[-2] == pytest.approx((1.55, 0.55))  # the goal's cell
+    assert path[-1] == (1.52, 0.57)  # and the goal itself, as navfn appends it
+    assert len(path) == 12
+    assert all(y == pytest.approx(0.55) for _, y in path[:-1])
+
+
+def test_plans_go_around_walls_through_the_gap_and_not_between_corners():
+    cm = free(20, 20)
+    cm.costs[:, 10] = 254
+    cm.costs[15, 10] = 0  # a gap at y = 1.55
+    path = navfn_plan(cm, (0.55, 0.55), (1.55, 0.55))
+    cells = [cm.world_to_map(x, y) for x, y in path]
+    assert (10, 15) in cells
+    assert all(cm.costs[my, mx] == 0 for mx, my in cells)
+    # two obstacles touching at a corner close the gap for an 8-connected step too
+    cm.costs[15, 10] = 254
+    cm.costs[14, 10] = 0
+    cm.costs[15, 11] = 0
+    cm.costs[14, 11] = 254
+    assert navfn_plan(cm, (0.55, 0.55), (1.55, 0.55)) == []
+
+
+def test_costs_push_the_path_away_from_expensive_cells():
+    cm = free(30, 11)
+    cm.costs[3:8, 10:20] = 200  # an expensive patch on the straight line
+    path = navfn_plan(cm, (0.55, 0.55), (2.55, 0.55))
+    assert not any(cm.costs[cm.world_to_map(x, y)[::-1]] for x, y in path)
+    assert path_length(path) > 2.0
+
+
+def test_a_goal_in_an_obstacle_or_off_the_map_has_no_plan_without_tolerance():
+    cm = free()
+    cm.costs[5, 15] = 253  # inscribed counts as an obstacle
+    assert navfn_plan(cm, (0.55, 0.55), (1.55, 0.55)) == []
+    assert navfn_plan(cm, (0.55, 0.55), (5.0, 0.5)) == []
+    assert navfn_plan(cm, (-1.0, 0.5), (1.0, 0.5)) == []
+    assert navfn_plan(cm, (0.55, 0.55), (1.95, 0.55)) == []  # the border ring
+
+
+def test_the_tolerance_finds_the_nearest_reachable_point_of_the_goal_window():
+    cm = free()
+    cm.costs[3:8, 13:18] = 254  # the goal (1.52, 0.53) sits in a 5 x 5 block
+    goal = (1.52, 0.53)
+    path = navfn_plan(cm, (0.55, 0.55), goal, tolerance=0.3)
+    end = path[-1]
+    # navfn's window: x, y from goal - 0.3 in steps of 0.1 while <= goal + 0.3 (adding up
+    # 0.1 six times to 1.22 overshoots 1.82 by a rounding error: six columns, seven rows)
+    wx, wy = goal_window(goal, 0.3, 0.1)
+    assert wx.shape == (7, 6)
+    legal = [
+        (x, y)
+        for x, y in zip(wx.ravel(), wy.ravel(), strict=True)
+        if cm.world_to_map(x, y) is not None
+        and cm.costs[cm.world_to_map(x, y)[::-1]] == 0
+        and 0 < cm.world_to_map(x, y)[1] < 9
+    ]
+    nearest = min(legal, key=lambda p: (p[0] - goal[0]) ** 2 + (p[1] - goal[1]) ** 2)
+    assert end == pytest.approx(nearest)
+    assert math.dist(end, goal) == pytest.approx(0.3)  # just outside the block
+    assert navfn_plan(cm, (0.55, 0.55), goal, tolerance=0.1) == []  # too small a window
+
+
+def test_unknown_space_is_crossed_only_when_allowed():
+    cm = free()
+    cm.costs[:, 10] = 255
+    assert navfn_plan(cm, (0.55, 0.55), (1.55, 0.55), allow_unknown=True)
+    assert navfn_plan(cm, (0.55, 0.55), (1.55, 0.55), allow_unknown=False) == []
+
+
+def test_the_robots_own_cell_is_cleared():
+    cm = free()
+    cm.costs[5, 5] = 254
+    assert navfn_plan(cm, (0.55, 0.55), (1.55, 0.55))
+    assert cm.costs[5, 5] == 254  # the costmap itself is not changed
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_dijkstra_potential_and_the_baseline_astar_find_equally_cheap_paths(seed):
+    rng = np.random.default_rng(seed)
+    costs = rng.choice([0, 0, 0, 50, 150, 254], size=(40, 50)).astype(np.uint8)
+    start, goal = (2, 2), (45, 35)
+    costs[2, 2] = costs[35, 45] = 0
+    cost = cell_costs(costs)
+    pot, pred = potential(cost, start)
+    cells, astar_cost = astar(cost, start, goal)
+    k = goal[1] * 50 + goal[0]
+    assert pot[k] < POT_HIGH and cells  # these seeds have a way through
+    dijkstra_cells = path_cells(pred, k, 50)
+    assert dijkstra_cells[0] == start and dijkstra_cells[-1] == goal
+    assert pot[k] == pytest.approx(astar_cost)
+    assert path_cost(dijkstra_cells, cost) == pytest.approx(astar_cost)
+    assert path_cost(cells, cost) == pytest.approx(astar_cost)
+    cm = Costmap2D(costs, 0.05, 0.0, 0.0)
+    a = navfn_plan(cm, cm.map_to_world(*start), cm.map_to_world(*goal), use_dijkstra=False)
+    d = navfn_plan(cm, cm.map_to_world(*start), cm.map_to_world(*goal))
+    assert path_length(a) == pytest.approx(path_length(d), rel=0.2)

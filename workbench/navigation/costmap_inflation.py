@@ -1,0 +1,103 @@
+"""costmap_2d's InflationLayer (``plugins/inflation_layer.cpp``, Noetic), by a distance transform.
+
+Every cell within ``ceil(inflation_radius / resolution)`` cells of a lethal cell gets
+``computeCost`` of its distance ``d`` (in cells) to the nearest lethal cell: 254 at
+``d == 0``, 253 while ``d * resolution <= inscribed_radius``, else
+``uint8(252 * exp(-cost_scaling_factor * (d * resolution - inscribed_radius)))``.
+A cell keeps the larger of its cost and the inflated one; an unknown cell takes the
+inflated cost only when it is at least 253 (any non-zero one with
+``inflate_unknown``). costmap_2d finds the nearest obstacle by a wavefront in
+distance order; :func:`scipy.ndimage.distance_transform_edt` gives the exact
+Euclidean distance to it.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+from scipy.ndimage import distance_transform_edt
+
+from workbench.navigation.costmap_grid import Costmap2D
+from workbench.navigation.costmap_layer import Layer, LayeredCostmap
+from workbench.navigation.costmap_params import Params
+from workbench.navigation.costs import (
+    FREE_SPACE,
+    INSCRIBED_INFLATED_OBSTACLE,
+    LETHAL_OBSTACLE,
+    NO_INFORMATION,
+)
+
+
+def compute_cost(
+    distance: np.ndarray, resolution: float, inscribed_radius: float, cost_scaling_factor: float
+) -> np.ndarray:
+    """``InflationLayer::computeCost`` of distances in cells (any shape)."""
+    d = np.asarray(distance, dtype=np.float64)
+    metres = d * resolution
+    factor = np.exp(-1.0 * cost_scaling_factor * (metres - inscribed_radius))
+    cost = ((INSCRIBED_INFLATED_OBSTACLE - 1) * factor).astype(np.uint8)
+    cost = np.where(metres <= inscribed_radius, np.uint8(INSCRIBED_INFLATED_OBSTACLE), cost)
+    return np.where(d == 0, np.uint8(LETHAL_OBSTACLE), cost).astype(np.uint8)
+
+
+def inflate(
+    costs: np.ndarray,
+    resolution: float,
+    inflation_radius: float,
+    inscribed_radius: float,
+    cost_scaling_factor: float,
+    inflate_unknown: bool = False,
+) -> None:
+    """Inflate the lethal cells of ``costs`` (uint8, changed in place) as costmap_2d does."""
+    cell_radius = int(max(0.0, math.ceil(inflation_radius / resolution)))
+    if cell_radius == 0:
+        return
+    lethal = costs == LETHAL_OBSTACLE
+    if not lethal.any():
+        return
+    distance = distance_transform_edt(~lethal)
+    near = distance <= cell_radius
+    d = distance[near]
+    cost = compute_cost(d, resolution, inscribed_radius, cost_scaling_factor)
+    old = costs[near]
+    unknown = old == NO_INFORMATION
+    takes = (cost > FREE_SPACE) if inflate_unknown else (cost >= INSCRIBED_INFLATED_OBSTACLE)
+    costs[near] = np.where(unknown, np.where(takes, cost, old), np.maximum(old, cost))
+
+
+class InflationLayer(Layer):
+    """Costs falling off with the distance to obstacles.
+
+    Args:
+        name: The layer's name.
+        params: The layer's parameters (``<costmap>/<name>``).
+        log: A logger.
+    """
+
+    def __init__(self, name: str, params: Params, log: Any) -> None:
+        super().__init__(name)
+        self.enabled = params.flag("enabled", True)
+        self.inflation_radius = params.number("inflation_radius", 0.55)
+        self.cost_scaling_factor = params.number("cost_scaling_factor", 10.0)
+        self.inflate_unknown = params.flag("inflate_unknown", False)
+        self.inscribed_radius = 0.0
+
+    def on_footprint_changed(self, layered: LayeredCostmap) -> None:
+        """Take the new inscribed radius."""
+        self.inscribed_radius = layered.inscribed_radius
+
+    def update_costs(self, master: Costmap2D, layered: LayeredCostmap) -> None:
+        """Inflate the master grid's lethal cells."""
+        inflate(
+            master.costs,
+            master.resolution,
+            self.inflation_radius,
+            self.inscribed_radius,
+            self.cost_scaling_factor,
+            self.inflate_unknown,
+        )
+
+
+__all__ = ["InflationLayer", "compute_cost", "inflate"]

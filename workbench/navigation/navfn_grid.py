@@ -1,0 +1,200 @@
+"""navfn's traversal costs on a costmap and the 8-connected grid graph both planners search.
+
+navfn (``navfn/src/navfn.cpp``, Noetic) turns a costmap cost ``c`` into a cell cost
+``COST_NEUTRAL + COST_FACTOR * c`` = ``50 + 0.8 c`` (truncated, at most 253); costs of
+253 and 254 are obstacles, unknown (255) costs 253 when ``allow_unknown`` and is an
+obstacle otherwise; the outermost ring of cells is always an obstacle. Its potential
+grows by the cell cost per cell travelled (a 4-neighbour wave with interpolation,
+approximating Euclidean travel). Here the potential is the shortest-path cost on the
+8-connected grid: a step into a cell costs the cell's cost times the step length
+(1, or sqrt 2 diagonally); a diagonal step needs both cells beside it free, so paths
+do not squeeze between two obstacles touching at a corner.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import threading
+from collections import OrderedDict
+from collections.abc import Hashable
+from typing import Any
+
+import numpy as np
+
+from workbench.navigation.costs import INSCRIBED_INFLATED_OBSTACLE, NO_INFORMATION
+
+COST_NEUTRAL = 50
+COST_FACTOR = 0.8
+#: navfn's obstacle cell cost.
+COST_OBS = 254
+#: A cell's potential before it is reached (navfn's ``POT_HIGH``).
+POT_HIGH = 1.0e10
+
+#: Neighbour offsets (dy, dx): four straight, then four diagonal.
+OFFSETS = ((0, 1), (1, 0), (0, -1), (-1, 0), (1, 1), (1, -1), (-1, 1), (-1, -1))
+
+
+def cell_costs(costs: np.ndarray, allow_unknown: bool = True) -> np.ndarray:
+    """navfn's cell costs (float, ``inf`` for obstacles) of a costmap's costs (``setCostmap``)."""
+    c = np.asarray(costs, dtype=np.uint8)
+    value = np.minimum((COST_NEUTRAL + COST_FACTOR * c.astype(np.float64)).astype(np.int64), 253)
+    out = np.where(c < INSCRIBED_INFLATED_OBSTACLE, value.astype(np.float64), np.inf)
+    if allow_unknown:
+        out = np.where(c == NO_INFORMATION, float(COST_OBS - 1), out)
+    out[0, :] = out[-1, :] = np.inf
+    out[:, 0] = out[:, -1] = np.inf
+    return out
+
+
+@functools.lru_cache(maxsize=8)
+def grid_edges(size_y: int, size_x: int) -> tuple[np.ndarray, np.ndarray]:
+    """The 8-connected edges of a grid padded by one cell on each side.
+
+    Every padded cell has 8 edge slots, in :data:`OFFSETS` order, so the CSR row pointers
+    are ``0, 8, 16, ...`` and the weights of one slot are a shifted slice of the costs.
+
+    Returns:
+        ``(indptr, indices)`` of the padded grid's ``(size_y + 2) * (size_x + 2)`` cells
+        (targets beyond the padding are clipped; their weights are infinite).
+    """
+    width = size_x + 2
+    n = width * (size_y + 2)
+    shifts = np.array([dy * width + dx for dy, dx in OFFSETS])
+    indices = np.clip(np.arange(n)[:, None] + shifts[None, :], 0, n - 1).ravel()
+    indptr = np.arange(0, 8 * n + 1, 8)
+    indices.setflags(write=False)
+    indptr.setflags(write=False)
+    return indptr, indices
+
+
+def _shifted(values: np.ndarray, shift: int) -> np.ndarray:
+    """``values[i + shift]`` for every ``i`` (``inf`` beyond the ends)."""
+    out = np.empty_like(values)
+    n = values.size
+    if shift >= 0:
+        out[: n - shift] = values[shift:]
+        out[n - shift :] = np.inf
+    else:
+        out[-shift:] = values[:shift]
+        out[:-shift] = np.inf
+    return out
+
+
+def edge_weights(cell_cost: np.ndarray) -> np.ndarray:
+    """The weights of :func:`grid_edges`' slots: step length times the entered cell's cost.
+
+    A diagonal step is infinite unless both cells beside it are passable.
+    """
+    size_y, size_x = cell_cost.shape
+    width = size_x + 2
+    padded = np.pad(cell_cost, 1, constant_values=np.inf).ravel()
+    diagonal = padded * math.sqrt(2.0)
+    blocked = np.where(np.isfinite(padded), 0.0, np.inf)
+    weights = np.empty((padded.size, 8))
+    for k, (dy, dx) in enumerate(OFFSETS):
+        if dx and dy:
+            column = _shifted(diagonal, dy * width + dx)
+            column += _shifted(blocked, dx)
+            column += _shifted(blocked, dy * width)
+        else:
+            column = _shifted(padded, dy * width + dx)
+        weights[:, k] = column
+    return weights.ravel()
+
+
+#: Graphs of recent costmaps, by content: a costmap that did not change is not rebuilt.
+_GRAPHS: OrderedDict[Hashable, Any] = OrderedDict()
+_GRAPHS_KEPT = 4
+_GRAPHS_LOCK = threading.Lock()
+
+
+def grid_graph(cell_cost: np.ndarray, key: Hashable | None = None) -> Any:
+    """The CSR graph of :func:`grid_edges` and :func:`edge_weights` (cached under ``key``)."""
+    from scipy.sparse import csr_matrix
+
+    if key is not None:
+        with _GRAPHS_LOCK:
+            graph = _GRAPHS.get(key)
+            if graph is not None:
+                _GRAPHS.move_to_end(key)
+                return graph
+    indptr, indices = grid_edges(*cell_cost.shape)
+    n = indptr.size - 1
+    graph = csr_matrix((edge_weights(cell_cost), indices, indptr), shape=(n, n))
+    if key is not None:
+        with _GRAPHS_LOCK:
+            _GRAPHS[key] = graph
+            while len(_GRAPHS) > _GRAPHS_KEPT:
+                _GRAPHS.popitem(last=False)
+    return graph
+
+
+def clear_graph_cache() -> None:
+    """Forget the cached graphs."""
+    with _GRAPHS_LOCK:
+        _GRAPHS.clear()
+
+
+def potential(
+    cell_cost: np.ndarray,
+    start: tuple[int, int],
+    limit: float = np.inf,
+    graph: Any = None,
+) -> tuple[np.ndarray, np.ndarray]:
+    """The potential from ``start`` = ``(mx, my)`` over the grid, and each cell's predecessor.
+
+    Args:
+        cell_cost: :func:`cell_costs` of the grid, shape ``(size_y, size_x)``.
+        start: The start cell; it is passable whatever its cost (a step's cost is the
+            cell it enters, so the start's own cost never counts).
+        limit: Stop spreading beyond this potential (cells past it stay at ``POT_HIGH``).
+        graph: :func:`grid_graph` of ``cell_cost`` if already built.
+
+    Returns:
+        ``(potential, predecessor)``, flat over cells (``my * size_x + mx``): the cost of
+        the cheapest path (:data:`POT_HIGH` where unreachable) and the previous cell on it
+        (negative at the start and where unreachable).
+    """
+    from scipy.sparse.csgraph import dijkstra
+
+    size_y, size_x = cell_cost.shape
+    width = size_x + 2
+    if graph is None:
+        graph = grid_graph(cell_cost)
+    source = (start[1] + 1) * width + start[0] + 1
+    dist, pred = dijkstra(
+        graph, directed=True, indices=source, return_predecessors=True, limit=limit
+    )
+    dist = dist.reshape(size_y + 2, width)[1:-1, 1:-1].ravel()
+    pred = pred.reshape(size_y + 2, width)[1:-1, 1:-1].ravel()
+    row, column = np.divmod(pred, width)
+    pred = np.where(pred >= 0, (row - 1) * size_x + column - 1, -9999)
+    return np.where(np.isfinite(dist), dist, POT_HIGH), pred
+
+
+def path_cells(predecessor: np.ndarray, goal_index: int, size_x: int) -> list[tuple[int, int]]:
+    """The cells ``(mx, my)`` from the start to ``goal_index`` by following predecessors."""
+    cells = []
+    k = int(goal_index)
+    while k >= 0:
+        cells.append((k % size_x, k // size_x))
+        k = int(predecessor[k])
+    cells.reverse()
+    return cells
+
+
+__all__ = [
+    "COST_FACTOR",
+    "COST_NEUTRAL",
+    "COST_OBS",
+    "OFFSETS",
+    "POT_HIGH",
+    "cell_costs",
+    "clear_graph_cache",
+    "edge_weights",
+    "grid_graph",
+    "grid_edges",
+    "path_cells",
+    "potential",
+]
