@@ -14,8 +14,8 @@ from costmap_world import (
     WALL_COLUMN,
     World,
     set_params,
-    wait_for,
 )
+from process_helpers import wait_for
 
 from workbench.bus import Bus, Node
 from workbench.msgs.geometry_msgs import PolygonStamped
