@@ -4,6 +4,8 @@ a /map, laser scans and tf in, nav_msgs/OccupancyGrid and the footprint out."""
 from __future__ import annotations
 
 import math
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -330,3 +332,54 @@ def test_robot_radius_is_searched_upwards_and_padded(bus):
     bus.params.set("/move_base/robot_radius", "big")
     with pytest.raises(CostmapError, match="parameter /move_base/robot_radius must be a number"):
         CostmapROS(costmap.node, "global_costmap", costmap.tf_buffer, start_timers=False)
+
+
+def test_the_timers_update_and_publish_on_the_bus_clock(bus):
+    set_params(bus, NS, {**GLOBAL_PARAMS, "update_frequency": 20.0, "publish_frequency": 5.0})
+    s = Setup(bus)
+    s.place(0.0, 0.0, 0.0)
+    costmap = CostmapROS(s.node, "global_costmap", s.buffer)  # timers on
+    try:
+        stop = []
+
+        def keep_placing():
+            while not stop:
+                s.world.publish_pose(0.0, 0.0, 0.0, s.node.now())
+                time.sleep(0.02)
+
+        thread = threading.Thread(target=keep_placing, daemon=True)
+        thread.start()
+        assert wait_for(lambda: len(s.grids) >= 3, timeout=10.0)
+        assert wait_for(lambda: len(s.footprints) >= 3 * len(s.grids) // 2, timeout=10.0)
+        stamps = [g.header.stamp.to_sec() for g in s.grids[:3]]
+        assert all(b - a >= 0.19 for a, b in zip(stamps[:-1], stamps[1:], strict=True))
+        assert (np.asarray(s.grids[-1].data).reshape(80, 80)[:, WALL_COLUMN] == 100).all()
+    finally:
+        stop.append(True)
+        costmap.shutdown()
+
+
+def test_a_rolling_window_samples_the_static_map_through_tf(bus):
+    ns = "/move_base/local_costmap"
+    set_params(
+        bus,
+        ns,
+        {
+            "global_frame": "odom",
+            "robot_base_frame": "base_link",
+            "rolling_window": True,
+            "width": 1,
+            "height": 1,
+            "resolution": 0.05,
+            "plugins": [{"name": "static", "type": "costmap_2d::StaticLayer"}],
+        },
+    )
+    s = Setup(bus, "local_costmap")
+    s.start()
+    data = s.cycle(1.2, 0.0, 0.0)  # the wall (x 1.5 .. 1.55) is 0.3 m ahead
+    msg = s.grids[-1]
+    assert (msg.info.width, msg.info.height) == (20, 20)
+    column = cell(msg, 1.525, 0.0)[1]
+    assert (data[:, column] == 100).all() and (data == 100).sum() == 20
+    data = s.cycle(0.0, 0.0, 0.0)  # the wall left the window
+    assert (data == 100).sum() == 0
