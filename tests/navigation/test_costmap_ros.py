@@ -20,6 +20,7 @@ from costmap_world import (
 from process_helpers import wait_for
 
 from workbench.bus import Bus, Node
+from workbench.msgs import Time
 from workbench.msgs.geometry_msgs import PolygonStamped
 from workbench.msgs.nav_msgs import OccupancyGrid
 from workbench.navigation.costmap_errors import CostmapError
@@ -383,3 +384,21 @@ def test_a_rolling_window_samples_the_static_map_through_tf(bus):
     assert (data[:, column] == 100).all() and (data == 100).sum() == 20
     data = s.cycle(0.0, 0.0, 0.0)  # the wall left the window
     assert (data == 100).sum() == 0
+
+
+def test_a_scan_waits_for_its_transform_and_keeps_only_the_newest(bus):
+    set_params(bus, NS, GLOBAL_PARAMS)
+    s = Setup(bus)
+    costmap = s.start()
+    first = s.place(0.0, 0.0, 0.0)
+    later = Time.from_sec(first.to_sec() + 0.05)
+    ranges = [math.inf] * 360
+    ranges[90] = 0.725  # y = 0.725 from where the robot will be at `later`
+    s.scan(ranges, later)
+    costmap.update()
+    obstacles = costmap.layer("obstacle_layer")
+    assert (obstacles.grid.costs == 254).sum() == 0  # no transform at that stamp yet
+    s.world.publish_pose(0.5, 0.0, 0.0, later)
+    assert wait_for(lambda: s.buffer.can_transform("odom", "base_link", later))
+    costmap.update()
+    assert np.argwhere(obstacles.grid.costs == 254).tolist() == [[54, 52]]  # (0.6, 0.725)

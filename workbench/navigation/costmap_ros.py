@@ -15,7 +15,10 @@ It publishes ``~<name>/costmap`` (``nav_msgs/OccupancyGrid``, latched, costmap_2
 0..100 translation, every ``1 / publish_frequency`` s) and ``~<name>/footprint``
 (``geometry_msgs/PolygonStamped``, the padded footprint at the robot's pose in the
 global frame, each update). The map is not waited for (costmap_2d blocks until it
-arrives): until then the costmap has its configured size.
+arrives): until then the costmap has its configured size. Every publication is the full
+grid (as with ``always_send_full_costmap``; there are no ``costmap_updates``), and the
+footprint is not read from a topic (Noetic subscribes and publishes ``footprint`` with
+two types; here it is published only).
 """
 
 from __future__ import annotations
