@@ -303,8 +303,8 @@ def test_a_silent_source_makes_the_costmap_not_current(bus, capsys):
         ("plugins", "static", f"parameter {NS}/plugins must be a list"),
         (
             "plugins",
-            [{"name": "x", "type": "costmap_2d::VoxelLayer"}],
-            "names the layer type 'costmap_2d::VoxelLayer'",
+            [{"name": "x", "type": "rtabmap_ros::StaticLayer"}],
+            "names the layer type 'rtabmap_ros::StaticLayer'",
         ),
         ("robot_radius", "big", None),  # a footprint is given: robot_radius is not read
     ],
@@ -402,3 +402,15 @@ def test_a_scan_waits_for_its_transform_and_keeps_only_the_newest(bus):
     assert wait_for(lambda: s.buffer.can_transform("odom", "base_link", later))
     costmap.update()
     assert np.argwhere(obstacles.grid.costs == 254).tolist() == [[54, 52]]  # (0.6, 0.725)
+
+
+def test_map_type_voxel_becomes_a_voxel_layer_read_as_obstacles(bus, capsys):
+    set_params(bus, NS, {**GLOBAL_PARAMS, "map_type": "voxel", "z_voxels": 10})
+    costmap = Setup(bus).start()
+    assert bus.params.get(f"{NS}/plugins")[1] == {
+        "name": "obstacle_layer",
+        "type": "costmap_2d::VoxelLayer",
+    }
+    assert bus.params.get(f"{NS}/obstacle_layer/z_voxels") == 10
+    assert costmap.layer("obstacle_layer").buffers[0].topic == "scan"
+    assert "obstacle_layer is read as a costmap_2d::ObstacleLayer" in capsys.readouterr().err

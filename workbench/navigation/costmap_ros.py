@@ -37,6 +37,7 @@ from workbench.navigation.costmap_params import (
     INFLATION,
     OBSTACLE,
     STATIC,
+    VOXEL,
     Params,
     convert_pre_hydro,
     copy_parent_parameters,
@@ -161,7 +162,14 @@ class CostmapROS:
                     inline=True,
                 )
             )
-        elif plugin_type == OBSTACLE:
+        elif plugin_type in (OBSTACLE, VOXEL):
+            if plugin_type == VOXEL:
+                self.log.warn(
+                    "%s: %s is read as a costmap_2d::ObstacleLayer (obstacles in 2-D, its "
+                    "voxel parameters are not used)",
+                    self.name,
+                    plugin_name,
+                )
             obstacles = ObstacleLayer(plugin_name, params, layered, self.log, self._now)
             obstacles.tf_buffer = self.tf_buffer
             layered.add(obstacles)
@@ -189,8 +197,8 @@ class CostmapROS:
         else:
             raise CostmapError(
                 f"parameter {self.params.name('plugins')} names the layer type {plugin_type!r}: "
-                "supported are costmap_2d::StaticLayer, costmap_2d::ObstacleLayer and "
-                "costmap_2d::InflationLayer"
+                "supported are costmap_2d::StaticLayer, costmap_2d::ObstacleLayer (or "
+                "VoxelLayer, read as an obstacle layer) and costmap_2d::InflationLayer"
             )
 
     def _locked(self, function: Any, *args: Any) -> None:
