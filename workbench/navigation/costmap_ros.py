@@ -23,6 +23,7 @@ two types; here it is published only).
 
 from __future__ import annotations
 
+import math
 import threading
 import time
 from collections.abc import Sequence
@@ -272,8 +273,6 @@ class CostmapROS:
                 self.transform_tolerance,
             )
             return None
-        import math
-
         m = matrix_from_msg(transform.transform)
         return float(m[0, 3]), float(m[1, 3]), math.atan2(m[1, 0], m[0, 0])
 
