@@ -414,3 +414,18 @@ def test_map_type_voxel_becomes_a_voxel_layer_read_as_obstacles(bus, capsys):
     assert bus.params.get(f"{NS}/obstacle_layer/z_voxels") == 10
     assert costmap.layer("obstacle_layer").buffers[0].topic == "scan"
     assert "obstacle_layer is read as a costmap_2d::ObstacleLayer" in capsys.readouterr().err
+
+
+def test_a_map_whose_data_does_not_fit_its_size_is_refused_with_one_line(bus, capsys):
+    from costmap_world import map_message
+
+    set_params(bus, NS, GLOBAL_PARAMS)
+    s = Setup(bus)
+    costmap = s.start()
+    bad = map_message(s.node.now())
+    bad.info.width = 81
+    s.world.map_pub.publish(bad)
+    assert wait_for(lambda: "the map on map has 6400 cells" in capsys.readouterr().err)
+    data = s.cycle()
+    assert data.shape == (80, 80) and (data[:, WALL_COLUMN] == 100).all()  # the old map stays
+    assert costmap.costmap().size_x == 80
