@@ -127,14 +127,3 @@ GLOBAL_PARAMS = {
 def set_params(bus, namespace: str, params: dict) -> None:
     for key, value in params.items():
         bus.params.set(f"{namespace}/{key}", value)
-
-
-def wait_for(predicate, timeout: float = 10.0) -> bool:
-    import time
-
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if predicate():
-            return True
-        time.sleep(0.01)
-    return bool(predicate())

@@ -10,7 +10,10 @@ from collections import defaultdict
 import numpy as np
 import pytest
 
-from workbench.navigation.costmap_inflation import compute_cost, inflate
+from workbench.bus import Bus, Node
+from workbench.navigation.costmap_inflation import InflationLayer, compute_cost, inflate
+from workbench.navigation.costmap_layer import Layer, LayeredCostmap
+from workbench.navigation.costmap_params import Params
 
 
 def test_compute_cost_by_hand():
@@ -131,3 +134,41 @@ def test_distance_transform_inflation_matches_costmap_2ds_wavefront(seed):
 def test_the_wavefront_reference_differs_from_the_exact_distance_somewhere():
     counts = [cells_differing(seed) for seed in range(6)]
     assert counts[2] >= 1 and counts.count(0) >= 3, counts
+
+
+class Marks(Layer):
+    """A layer writing lethal cells (a stand-in for the obstacle layer)."""
+
+    def __init__(self) -> None:
+        super().__init__("marks")
+        self.cells: list[tuple[int, int]] = []
+
+    def update_costs(self, master, layered) -> None:
+        for x, y in self.cells:
+            master.costs[y, x] = 254
+
+
+def test_the_layer_reinflates_when_obstacles_change_and_reuses_an_unchanged_result():
+    bus = Bus()
+    try:
+        node = Node("move_base", bus=bus, disable_rosout=True)
+        bus.params.set("/move_base/c/inflation_layer/inflation_radius", 0.3)
+        layered = LayeredCostmap("map", rolling_window=False, track_unknown_space=False)
+        layered.resize_map(30, 20, 0.05, 0.0, 0.0)
+        marks = Marks()
+        layered.add(marks)
+        layered.add(
+            InflationLayer("inflation_layer", Params(node, "/move_base/c/inflation_layer"), None)
+        )
+        layered.set_footprint([(0.1, 0.1), (-0.1, 0.1), (-0.1, -0.1), (0.1, -0.1)])
+        for cells in ([(5, 5)], [(5, 5)], [(20, 12), (21, 12)], []):
+            marks.cells = cells
+            layered.update_map(0.0, 0.0, 0.0)
+            expected = np.zeros((20, 30), np.uint8)
+            for x, y in cells:
+                expected[y, x] = 254
+            inflate(expected, 0.05, 0.3, 0.1, 10.0)
+            np.testing.assert_array_equal(layered.master.costs, expected)
+        assert (layered.master.costs == 0).all()
+    finally:
+        bus.shutdown()

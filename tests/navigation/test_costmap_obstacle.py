@@ -94,3 +94,67 @@ def test_scans_keep_readings_in_range_and_inf_only_when_valid():
     assert points.shape == (2, 3)
     np.testing.assert_allclose(points[1], [-(3.5 - 0.0001), 0.0, 0.0], atol=1e-6)
     assert scan_points(scan([float("nan")] * 4)).shape == (0, 3)
+
+
+def observation_buffer(params: dict):
+    from workbench.bus import Bus, Node
+    from workbench.navigation.costmap_observation import ObservationBuffer
+    from workbench.navigation.costmap_params import Params
+
+    bus = Bus()
+    node = Node("move_base", bus=bus, disable_rosout=True)
+    for key, value in params.items():
+        bus.params.set(f"/move_base/c/obstacle_layer/{key}", value)
+    source = Params(node, "/move_base/c/obstacle_layer/laser")
+    return bus, ObservationBuffer("laser", source, "odom")
+
+
+def tf_buffer():
+    from costmap_world import transform
+
+    from workbench.msgs import Time
+    from workbench.tf import Buffer
+
+    buffer = Buffer()
+    for t in (0.0, 10.0):
+        stamp = Time.from_sec(t)
+        buffer.set_transform(transform("odom", "base_link", (1.0, 2.0, 0.0), math.pi / 2, stamp))
+        buffer.set_transform(transform("base_link", "laser", (0.1, 0.0, 0.3), 0.0, stamp))
+    return buffer
+
+
+def test_observations_take_origin_heights_ranges_and_persistence_from_parameters():
+    from workbench.msgs import Time
+
+    bus, buffer = observation_buffer(
+        {
+            "obstacle_range": 1.5,  # searched upwards from the source
+            "laser": {
+                "sensor_frame": "base_link",
+                "min_obstacle_height": 0.1,
+                "max_obstacle_height": 0.25,
+                "observation_persistence": 1.0,
+            },
+        }
+    )
+    try:
+        assert (buffer.obstacle_range, buffer.raytrace_range) == (1.5, 3.0)
+        msg = scan([1.0, 3.5, 2.0, 0.5])
+        msg.header.frame_id = "laser"
+        msg.header.stamp = Time.from_sec(1.0)
+        buffer.buffer_scan(msg, tf_buffer(), now=1.0)
+        (obs,) = buffer.get()
+        np.testing.assert_allclose(obs.origin, [1.0, 2.0, 0.0], atol=1e-12)  # base_link
+        assert obs.points.shape == (0, 3)  # the laser is 0.3 m up: above 0.25
+        buffer.max_obstacle_height = 0.35
+        msg.header.stamp = Time.from_sec(1.5)
+        buffer.buffer_scan(msg, tf_buffer(), now=1.5)
+        newest = buffer.get()[0]
+        # beam 0 (1 m along the laser's x = odom's y) from the laser at (1, 2.1)
+        np.testing.assert_allclose(newest.points[0], [1.0, 3.1, 0.3], atol=1e-9)
+        assert len(buffer.get()) == 2  # both within observation_persistence
+        msg.header.stamp = Time.from_sec(3.0)
+        buffer.buffer_scan(msg, tf_buffer(), now=3.0)
+        assert len(buffer.get()) == 1  # the others are more than 1 s older
+    finally:
+        bus.shutdown()

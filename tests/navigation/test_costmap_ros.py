@@ -4,6 +4,8 @@ a /map, laser scans and tf in, nav_msgs/OccupancyGrid and the footprint out."""
 from __future__ import annotations
 
 import math
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -14,10 +16,11 @@ from costmap_world import (
     WALL_COLUMN,
     World,
     set_params,
-    wait_for,
 )
+from process_helpers import wait_for
 
 from workbench.bus import Bus, Node
+from workbench.msgs import Time
 from workbench.msgs.geometry_msgs import PolygonStamped
 from workbench.msgs.nav_msgs import OccupancyGrid
 from workbench.navigation.costmap_errors import CostmapError
@@ -300,8 +303,8 @@ def test_a_silent_source_makes_the_costmap_not_current(bus, capsys):
         ("plugins", "static", f"parameter {NS}/plugins must be a list"),
         (
             "plugins",
-            [{"name": "x", "type": "costmap_2d::VoxelLayer"}],
-            "names the layer type 'costmap_2d::VoxelLayer'",
+            [{"name": "x", "type": "rtabmap_ros::StaticLayer"}],
+            "names the layer type 'rtabmap_ros::StaticLayer'",
         ),
         ("robot_radius", "big", None),  # a footprint is given: robot_radius is not read
     ],
@@ -330,3 +333,99 @@ def test_robot_radius_is_searched_upwards_and_padded(bus):
     bus.params.set("/move_base/robot_radius", "big")
     with pytest.raises(CostmapError, match="parameter /move_base/robot_radius must be a number"):
         CostmapROS(costmap.node, "global_costmap", costmap.tf_buffer, start_timers=False)
+
+
+def test_the_timers_update_and_publish_on_the_bus_clock(bus):
+    set_params(bus, NS, {**GLOBAL_PARAMS, "update_frequency": 20.0, "publish_frequency": 5.0})
+    s = Setup(bus)
+    s.place(0.0, 0.0, 0.0)
+    costmap = CostmapROS(s.node, "global_costmap", s.buffer)  # timers on
+    try:
+        stop = []
+
+        def keep_placing():
+            while not stop:
+                s.world.publish_pose(0.0, 0.0, 0.0, s.node.now())
+                time.sleep(0.02)
+
+        thread = threading.Thread(target=keep_placing, daemon=True)
+        thread.start()
+        assert wait_for(lambda: len(s.grids) >= 3, timeout=10.0)
+        assert wait_for(lambda: len(s.footprints) >= 3 * len(s.grids) // 2, timeout=10.0)
+        stamps = [g.header.stamp.to_sec() for g in s.grids[:3]]
+        assert all(b - a >= 0.19 for a, b in zip(stamps[:-1], stamps[1:], strict=True))
+        assert (np.asarray(s.grids[-1].data).reshape(80, 80)[:, WALL_COLUMN] == 100).all()
+    finally:
+        stop.append(True)
+        costmap.shutdown()
+
+
+def test_a_rolling_window_samples_the_static_map_through_tf(bus):
+    ns = "/move_base/local_costmap"
+    set_params(
+        bus,
+        ns,
+        {
+            "global_frame": "odom",
+            "robot_base_frame": "base_link",
+            "rolling_window": True,
+            "width": 1,
+            "height": 1,
+            "resolution": 0.05,
+            "plugins": [{"name": "static", "type": "costmap_2d::StaticLayer"}],
+        },
+    )
+    s = Setup(bus, "local_costmap")
+    s.start()
+    data = s.cycle(1.2, 0.0, 0.0)  # the wall (x 1.5 .. 1.55) is 0.3 m ahead
+    msg = s.grids[-1]
+    assert (msg.info.width, msg.info.height) == (20, 20)
+    column = cell(msg, 1.525, 0.0)[1]
+    assert (data[:, column] == 100).all() and (data == 100).sum() == 20
+    data = s.cycle(0.0, 0.0, 0.0)  # the wall left the window
+    assert (data == 100).sum() == 0
+
+
+def test_a_scan_waits_for_its_transform_and_keeps_only_the_newest(bus):
+    set_params(bus, NS, GLOBAL_PARAMS)
+    s = Setup(bus)
+    costmap = s.start()
+    first = s.place(0.0, 0.0, 0.0)
+    later = Time.from_sec(first.to_sec() + 0.05)
+    ranges = [math.inf] * 360
+    ranges[90] = 0.725  # y = 0.725 from where the robot will be at `later`
+    s.scan(ranges, later)
+    costmap.update()
+    obstacles = costmap.layer("obstacle_layer")
+    assert (obstacles.grid.costs == 254).sum() == 0  # no transform at that stamp yet
+    s.world.publish_pose(0.5, 0.0, 0.0, later)
+    assert wait_for(lambda: s.buffer.can_transform("odom", "base_link", later))
+    costmap.update()
+    assert np.argwhere(obstacles.grid.costs == 254).tolist() == [[54, 52]]  # (0.6, 0.725)
+
+
+def test_map_type_voxel_becomes_a_voxel_layer_read_as_obstacles(bus, capsys):
+    set_params(bus, NS, {**GLOBAL_PARAMS, "map_type": "voxel", "z_voxels": 10})
+    costmap = Setup(bus).start()
+    assert bus.params.get(f"{NS}/plugins")[1] == {
+        "name": "obstacle_layer",
+        "type": "costmap_2d::VoxelLayer",
+    }
+    assert bus.params.get(f"{NS}/obstacle_layer/z_voxels") == 10
+    assert costmap.layer("obstacle_layer").buffers[0].topic == "scan"
+    assert "obstacle_layer is read as a costmap_2d::ObstacleLayer" in capsys.readouterr().err
+
+
+def test_a_map_whose_data_does_not_fit_its_size_is_refused_with_one_line(bus, capsys):
+    from costmap_world import map_message
+
+    set_params(bus, NS, GLOBAL_PARAMS)
+    s = Setup(bus)
+    costmap = s.start()
+    bad = map_message(s.node.now())
+    bad.info.width = 81
+    s.world.map_pub.publish(bad)
+    assert wait_for(lambda: "the map on map has 6400 cells" in capsys.readouterr().err)
+    data = s.cycle()
+    assert data.shape == (80, 80) and (data[:, WALL_COLUMN] == 100).all()  # the old map stays
+    assert costmap.costmap().size_x == 80

@@ -134,3 +134,21 @@ def test_dijkstra_potential_and_the_baseline_astar_find_equally_cheap_paths(seed
     a = navfn_plan(cm, cm.map_to_world(*start), cm.map_to_world(*goal), use_dijkstra=False)
     d = navfn_plan(cm, cm.map_to_world(*start), cm.map_to_world(*goal))
     assert path_length(a) == pytest.approx(path_length(d), rel=0.2)
+
+
+def test_an_unreachable_goal_in_a_closed_room_stops_once_the_robots_room_is_spread(monkeypatch):
+    import workbench.navigation.navfn as navfn
+
+    cm = free(60, 60)
+    cm.costs[30, :] = 254  # a wall across: the upper half cannot be reached
+    calls = []
+    real = navfn.potential
+    monkeypatch.setattr(navfn, "potential", lambda *a: calls.append(a[2]) or real(*a))
+    assert navfn_plan(cm, (0.55, 0.55), (0.55, 5.55)) == []
+    assert len(calls) == 1  # the lower half was spread whole at the first limit
+    cm.costs[30, :] = 0
+    cm.costs[:55, 10] = 254  # a wall with a gap far up: the detour is ~ 11 m for 1 m
+    calls.clear()
+    path = navfn_plan(cm, (0.55, 0.55), (1.55, 0.55))
+    assert path and path_length(path) > 10.0
+    assert len(calls) == 2 and calls[1] == 4 * calls[0]  # spread further once

@@ -4,7 +4,8 @@ the make_plan service, and navfn's log lines for goals it cannot plan to."""
 from __future__ import annotations
 
 import pytest
-from costmap_world import GLOBAL_PARAMS, World, set_params, wait_for
+from costmap_world import GLOBAL_PARAMS, World, set_params
+from process_helpers import wait_for
 
 from workbench.bus import Bus, Node
 from workbench.msgs.geometry_msgs import PoseStamped

@@ -83,21 +83,41 @@ class InflationLayer(Layer):
         self.cost_scaling_factor = params.number("cost_scaling_factor", 10.0)
         self.inflate_unknown = params.flag("inflate_unknown", False)
         self.inscribed_radius = 0.0
+        self._last: tuple[tuple[float, ...], np.ndarray, np.ndarray] | None = None
 
     def on_footprint_changed(self, layered: LayeredCostmap) -> None:
         """Take the new inscribed radius."""
         self.inscribed_radius = layered.inscribed_radius
 
     def update_costs(self, master: Costmap2D, layered: LayeredCostmap) -> None:
-        """Inflate the master grid's lethal cells."""
-        inflate(
-            master.costs,
+        """Inflate the master grid's lethal cells.
+
+        When the grid and the parameters are those of the last update, its result is
+        reused (a global costmap mostly stays the same between updates).
+        """
+        settings = (
             master.resolution,
             self.inflation_radius,
             self.inscribed_radius,
             self.cost_scaling_factor,
-            self.inflate_unknown,
+            float(self.inflate_unknown),
         )
+        last = self._last
+        if (
+            last is not None
+            and last[0] == settings
+            and last[1].shape == master.costs.shape
+            and np.array_equal(last[1], master.costs)
+        ):
+            master.costs[:] = last[2]
+            return
+        before = master.costs.copy()
+        inflate(master.costs, *settings[:4], inflate_unknown=self.inflate_unknown)
+        self._last = (settings, before, master.costs.copy())
+
+    def reset(self) -> None:
+        """Forget the last inflation."""
+        self._last = None
 
 
 __all__ = ["InflationLayer", "compute_cost", "inflate"]

@@ -56,9 +56,8 @@ class ObservationBuffer:
 
     Args:
         source: The source's name (in ``observation_sources``).
-        params: The source's parameters (``<layer>/<source>``).
-        layer_params: The layer's parameters (``obstacle_range`` and ``raytrace_range``
-            are searched from the source upwards, as costmap_2d does).
+        params: The source's parameters (``<layer>/<source>``; ``obstacle_range`` and
+            ``raytrace_range`` are searched from there upwards, as costmap_2d does).
         global_frame: The costmap's frame.
     """
 

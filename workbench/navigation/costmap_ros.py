@@ -15,11 +15,15 @@ It publishes ``~<name>/costmap`` (``nav_msgs/OccupancyGrid``, latched, costmap_2
 0..100 translation, every ``1 / publish_frequency`` s) and ``~<name>/footprint``
 (``geometry_msgs/PolygonStamped``, the padded footprint at the robot's pose in the
 global frame, each update). The map is not waited for (costmap_2d blocks until it
-arrives): until then the costmap has its configured size.
+arrives): until then the costmap has its configured size. Every publication is the full
+grid (as with ``always_send_full_costmap``; there are no ``costmap_updates``), and the
+footprint is not read from a topic (Noetic subscribes and publishes ``footprint`` with
+two types; here it is published only).
 """
 
 from __future__ import annotations
 
+import math
 import threading
 import time
 from collections.abc import Sequence
@@ -34,6 +38,7 @@ from workbench.navigation.costmap_params import (
     INFLATION,
     OBSTACLE,
     STATIC,
+    VOXEL,
     Params,
     convert_pre_hydro,
     copy_parent_parameters,
@@ -158,7 +163,14 @@ class CostmapROS:
                     inline=True,
                 )
             )
-        elif plugin_type == OBSTACLE:
+        elif plugin_type in (OBSTACLE, VOXEL):
+            if plugin_type == VOXEL:
+                self.log.warn(
+                    "%s: %s is read as a costmap_2d::ObstacleLayer (obstacles in 2-D, its "
+                    "voxel parameters are not used)",
+                    self.name,
+                    plugin_name,
+                )
             obstacles = ObstacleLayer(plugin_name, params, layered, self.log, self._now)
             obstacles.tf_buffer = self.tf_buffer
             layered.add(obstacles)
@@ -186,8 +198,8 @@ class CostmapROS:
         else:
             raise CostmapError(
                 f"parameter {self.params.name('plugins')} names the layer type {plugin_type!r}: "
-                "supported are costmap_2d::StaticLayer, costmap_2d::ObstacleLayer and "
-                "costmap_2d::InflationLayer"
+                "supported are costmap_2d::StaticLayer, costmap_2d::ObstacleLayer (or "
+                "VoxelLayer, read as an obstacle layer) and costmap_2d::InflationLayer"
             )
 
     def _locked(self, function: Any, *args: Any) -> None:
@@ -261,8 +273,6 @@ class CostmapROS:
                 self.transform_tolerance,
             )
             return None
-        import math
-
         m = matrix_from_msg(transform.transform)
         return float(m[0, 3]), float(m[1, 3]), math.atan2(m[1, 0], m[0, 0])
 

@@ -97,6 +97,15 @@ def _best_goal(
     return (float(points[i, 0]), float(points[i, 1]), int(index[i])), certain
 
 
+def _exhausted(pot: np.ndarray, passable: np.ndarray, shape: tuple[int, ...]) -> bool:
+    """Whether no passable cell next to a reached one is left unreached."""
+    from scipy.ndimage import binary_dilation
+
+    reached = (pot < POT_HIGH).reshape(shape)
+    border = binary_dilation(reached, structure=np.ones((3, 3), bool)) & ~reached
+    return not (border & passable.reshape(shape)).any()
+
+
 def _spread(
     costmap: Costmap2D,
     cell_cost: np.ndarray,
@@ -109,7 +118,9 @@ def _spread(
     spreading once it reached the goal); returns the best point and the predecessors.
 
     The first limit is twice the cost of a straight line of free cells to the far side of
-    the goal window; each retry quadruples it, the last spreads over the whole grid.
+    the goal window; each retry quadruples it, the last spreads over the whole grid. When
+    the potential reached every cell it can reach (no passable cell borders the reached
+    ones), spreading further changes nothing.
     """
     passable = np.isfinite(cell_cost).ravel()
     sx, sy = costmap.map_to_world(*start)
@@ -119,7 +130,7 @@ def _spread(
     while True:
         pot, pred = potential(cell_cost, start, limit, graph)
         best, certain = _best_goal(costmap, pot, passable, goal, tolerance)
-        if certain or math.isinf(limit):
+        if certain or math.isinf(limit) or _exhausted(pot, passable, cell_cost.shape):
             return best, pred
         limit = limit * 4.0 if limit < full else math.inf
 
