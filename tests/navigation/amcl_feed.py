@@ -7,13 +7,15 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from workbench.bus import Bus, Node
 from workbench.mapping.geometry import between, compose
-from workbench.mapping.map_server_node import LoadedMap, load_map_yaml
+from workbench.mapping.map_server_node import LoadedMap, MapServer, load_map_yaml
 from workbench.msgs import Time
 from workbench.msgs.geometry_msgs import TransformStamped
 from workbench.msgs.rosgraph_msgs import Clock
@@ -21,6 +23,7 @@ from workbench.msgs.sensor_msgs import LaserScan
 from workbench.msgs.tf2_msgs import TFMessage
 from workbench.navigation.amcl_laser import LaserScanData, prepare_ranges
 from workbench.navigation.amcl_map import AmclMap
+from workbench.navigation.amcl_node import Amcl
 
 REPO = Path(__file__).resolve().parents[2]
 DEMO_ROOMS = REPO / "mapping" / "demo_rooms.yaml"
@@ -154,3 +157,54 @@ def pose_of(t) -> np.ndarray:
     return np.array(
         [t.transform.translation.x, t.transform.translation.y, 2 * math.atan2(q.z, q.w)]
     )
+
+
+STARTED: list[Amcl] = []
+
+
+@pytest.fixture
+def bus() -> Iterator[Bus]:
+    """An in-process bus on simulated time; the amcl nodes started on it are closed after."""
+    bus = Bus()
+    bus.params.set("/use_sim_time", True)
+    yield bus
+    bus.shutdown()
+    for amcl in STARTED:
+        amcl.close()
+    STARTED.clear()
+
+
+def start(bus: Bus, params: dict | None = None) -> Amcl:
+    node = Node("amcl", bus=bus)
+    for key, value in (params or {}).items():
+        node.set_param("~" + key, value)
+    amcl = Amcl(node)
+    STARTED.append(amcl)
+    return amcl
+
+
+def serve_map(bus: Bus) -> MapServer:
+    return MapServer(Node("map_server", bus=bus, disable_rosout=True), loaded_map())
+
+
+class Output:
+    """Everything the nodes printed so far (stdout and stderr)."""
+
+    def __init__(self, capsys) -> None:
+        self.capsys, self.text = capsys, ""
+
+    def has(self, words: str, timeout: float = 10.0) -> bool:
+        def seen() -> bool:
+            captured = self.capsys.readouterr()
+            self.text += captured.out + captured.err
+            return words in self.text
+
+        return wait_until(seen, timeout)
+
+
+def initial_guess(truth: np.ndarray, offset=(0.5, -0.4, 0.25)) -> dict:
+    return {
+        "initial_pose_x": float(truth[0] + offset[0]),
+        "initial_pose_y": float(truth[1] + offset[1]),
+        "initial_pose_a": float(truth[2] + offset[2]),
+    }

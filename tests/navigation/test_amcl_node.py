@@ -5,69 +5,27 @@ truly is (texts and behaviour of amcl_node.cpp, Noetic)."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-
 import numpy as np
 import pytest
-from amcl_feed import Robot, amcl_map, loaded_map, noisy_odometry, pose_of, tour, wait_until
+from amcl_feed import (
+    Output,
+    Robot,
+    amcl_map,
+    bus,
+    initial_guess,
+    noisy_odometry,
+    pose_of,
+    serve_map,
+    start,
+    tour,
+    wait_until,
+)
 
-from workbench.bus import Bus, Node
+from workbench.bus import Node
 from workbench.mapping.geometry import compose
-from workbench.mapping.map_server_node import MapServer
 from workbench.msgs.geometry_msgs import PoseArray, PoseWithCovarianceStamped
 from workbench.msgs.std_srvs import Empty
-from workbench.navigation.amcl_node import Amcl
 from workbench.tf import Buffer, TransformListener
-
-STARTED: list[Amcl] = []
-
-
-@pytest.fixture
-def bus() -> Iterator[Bus]:
-    """An in-process bus on simulated time; the amcl nodes started on it are closed after."""
-    bus = Bus()
-    bus.params.set("/use_sim_time", True)
-    yield bus
-    bus.shutdown()
-    for amcl in STARTED:
-        amcl.close()
-    STARTED.clear()
-
-
-def start(bus: Bus, params: dict | None = None) -> Amcl:
-    node = Node("amcl", bus=bus)
-    for key, value in (params or {}).items():
-        node.set_param("~" + key, value)
-    amcl = Amcl(node)
-    STARTED.append(amcl)
-    return amcl
-
-
-def serve_map(bus: Bus) -> MapServer:
-    return MapServer(Node("map_server", bus=bus, disable_rosout=True), loaded_map())
-
-
-class Output:
-    """Everything the nodes printed so far (stdout and stderr)."""
-
-    def __init__(self, capsys) -> None:
-        self.capsys, self.text = capsys, ""
-
-    def has(self, words: str, timeout: float = 10.0) -> bool:
-        def seen() -> bool:
-            captured = self.capsys.readouterr()
-            self.text += captured.out + captured.err
-            return words in self.text
-
-        return wait_until(seen, timeout)
-
-
-def initial_guess(truth: np.ndarray, offset=(0.5, -0.4, 0.25)) -> dict:
-    return {
-        "initial_pose_x": float(truth[0] + offset[0]),
-        "initial_pose_y": float(truth[1] + offset[1]),
-        "initial_pose_a": float(truth[2] + offset[2]),
-    }
 
 
 def test_the_node_localises_the_robot_and_publishes_map_to_odom(bus, capsys):
@@ -221,3 +179,6 @@ def test_the_map_topic_is_used_with_use_map_topic(bus, capsys):
     assert output.has("Subscribed to map topic.")
     assert "Requesting the map..." not in output.text
     assert amcl.localizer.map.size_x == 203
+
+
+__all__ = ["bus"]  # the fixture
