@@ -124,7 +124,14 @@ class AmclMap:
         poses[:, 2] = rng.random(count) * 2 * np.pi - np.pi
         return poses
 
-    def calc_ranges(self, pose: np.ndarray, angles: np.ndarray, max_range: float) -> np.ndarray:
+    def calc_ranges(
+        self,
+        pose: np.ndarray,
+        angles: np.ndarray,
+        max_range: float,
+        *,
+        unknown_blocks: bool = True,
+    ) -> np.ndarray:
         """Ranges from ``pose`` along ``angles`` to the first non-free cell (``map_calc_range``).
 
         Marches each beam in steps of half a cell; a beam that leaves the map or meets
@@ -134,6 +141,8 @@ class AmclMap:
             pose: Sensor pose ``(x, y, theta)`` in the map frame (m, rad).
             angles: Beam angles in the sensor frame (rad).
             max_range: The sensor's range (m).
+            unknown_blocks: False: only occupied cells stop a beam (to simulate a laser in
+                the mapped world, where unknown cells are merely unseen).
         """
         step = self.resolution / 2.0
         t = np.arange(0.0, max_range + step, step)
@@ -142,7 +151,8 @@ class AmclMap:
         y = pose[1] + np.sin(direction)[:, None] * t[None, :]
         i, j, valid = self.cells_of(x, y)
         blocked = ~valid
-        blocked[valid] = self.states[j[valid], i[valid]] != FREE
+        state = self.states[j[valid], i[valid]]
+        blocked[valid] = state != FREE if unknown_blocks else state == OCCUPIED
         hit = blocked.any(axis=1)
         first = np.argmax(blocked, axis=1)
         return np.where(hit, np.minimum(t[first], max_range), max_range)
