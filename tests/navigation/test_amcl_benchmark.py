@@ -28,9 +28,11 @@ def test_a_short_run_converges_and_the_loop_agrees(tmp_path, capsys, monkeypatch
         monkeypatch.setattr(bench, "PARTICLES", (500,))
         assert bench.main(["--quick", "--out", str(out)]) == 0
     result = json.loads(out.read_text())
-    (row,) = result["accuracy"]
-    assert row["first_error_m"] > 0.5 and row["converged_after_m"] < 5.0
-    assert row["mean_error_m"] <= 0.1 and row["odometry_max_error_m"] > row["max_error_m"]
+    biased, unbiased = result["accuracy"]
+    assert (biased["odometry_scale"], unbiased["odometry_scale"]) == (1.03, 1.0)
+    for row in (biased, unbiased):
+        assert row["first_error_m"] > 0.5 and row["converged_after_m"] < 5.0
+        assert row["mean_error_m"] <= 0.1 and row["odometry_max_error_m"] > row["max_error_m"]
     (timing,) = result["speed"]
     assert timing["same_values"] and timing["loop_ratio"] > 1.0
     assert "Update time per scan" in capsys.readouterr().out

@@ -34,6 +34,23 @@ def set_planar(position: Any, orientation: Any, pose: np.ndarray) -> None:
     )
 
 
+def pose_list(poses: np.ndarray) -> list[Any]:
+    """``geometry_msgs/Pose`` messages of planar poses ``(N, 3)`` (a PoseArray's ``poses``)."""
+    from workbench.msgs.geometry_msgs import Point, Pose, Quaternion
+
+    half = np.asarray(poses[:, 2], dtype=float) / 2.0
+    columns = (
+        poses[:, 0].tolist(),
+        poses[:, 1].tolist(),
+        np.sin(half).tolist(),
+        np.cos(half).tolist(),
+    )
+    return [
+        Pose(position=Point(x=x, y=y, z=0.0), orientation=Quaternion(x=0.0, y=0.0, z=z, w=w))
+        for x, y, z, w in zip(*columns, strict=True)
+    ]
+
+
 def yaw_in_base(mounting: Any, angle: float) -> float:
     """The yaw in the base frame of a laser beam at ``angle`` in the laser frame.
 
@@ -73,6 +90,7 @@ __all__ = [
     "covariance_36",
     "map_to_odom",
     "planar",
+    "pose_list",
     "set_planar",
     "transform_pose",
     "yaw_in_base",

@@ -49,6 +49,7 @@ from workbench.navigation.amcl_messages import (
     covariance_36,
     map_to_odom,
     planar,
+    pose_list,
     set_planar,
     transform_pose,
     yaw_in_base,
@@ -353,18 +354,12 @@ class Amcl:
 
     # ---------------------------------------------------------------- outputs
     def _publish_cloud(self) -> None:
-        from workbench.msgs.geometry_msgs import Pose, PoseArray
+        from workbench.msgs.geometry_msgs import PoseArray
 
         assert self.localizer is not None
-        cloud = PoseArray()
+        cloud = PoseArray(poses=pose_list(self.localizer.pf.poses))
         cloud.header.stamp = self.node.now()
         cloud.header.frame_id = self.params.global_frame_id
-        poses = []
-        for x, y, theta in self.localizer.pf.poses:
-            pose = Pose()
-            set_planar(pose.position, pose.orientation, np.array([x, y, theta]))
-            poses.append(pose)
-        cloud.poses = poses
         self.cloud_pub.publish(cloud)
 
     def _publish_pose(self, stamp: Any, pose: np.ndarray, cov: np.ndarray | None) -> None:
