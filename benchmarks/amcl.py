@@ -43,6 +43,7 @@ from workbench.navigation.amcl_laser import LaserScanData, beam_indices, prepare
 from workbench.navigation.amcl_localizer import Localizer  # noqa: E402
 from workbench.navigation.amcl_map import FREE, AmclMap  # noqa: E402
 from workbench.navigation.amcl_params import AmclParams  # noqa: E402
+from workbench.navigation.amcl_simulate import noisy_odometry, simulated_ranges  # noqa: E402
 
 MAPS = {
     "demo_rooms": ("mapping/demo_rooms.yaml", 3.5),
@@ -125,21 +126,8 @@ def route(m: AmclMap, length: float, seed: int, step: float = 0.05) -> np.ndarra
     return np.array(poses)
 
 
-def odometry(truth: np.ndarray, seed: int, scale: float = 1.03) -> np.ndarray:
-    rng = np.random.default_rng(seed)
-    odom = [truth[0].copy()]
-    for a, b in zip(truth[:-1], truth[1:], strict=True):
-        s = between(a, b)
-        d = float(np.hypot(s[0], s[1]))
-        s[:2] *= scale
-        sd = np.array([0.05 * d, 0.05 * d, 0.02 * abs(s[2]) + 0.02 * d])
-        odom.append(compose(odom[-1], s + rng.normal(0.0, 1.0, 3) * sd))
-    return np.array(odom)
-
-
 def scan(m: AmclMap, pose: np.ndarray, range_max: float, rng: np.random.Generator) -> LaserScanData:
-    ranges = m.calc_ranges(pose, ANGLES, range_max, unknown_blocks=False)
-    noisy = np.where(ranges >= range_max, np.inf, ranges + rng.normal(0.0, 0.01, BEAMS))
+    noisy = simulated_ranges(m, pose, ANGLES, range_max, rng)
     return LaserScanData(prepare_ranges(noisy, 0.12, range_max), ANGLES.copy(), range_max)
 
 
@@ -147,7 +135,7 @@ def accuracy(name: str, particles: int, length: float, seed: int, scale: float =
     m = load(name)
     range_max = MAPS[name][1]
     truth = route(m, length, seed)
-    odom = odometry(truth, seed, scale)
+    odom = noisy_odometry(truth, seed, scale)
     start = truth[0] + GUESS
     params = AmclParams(
         max_particles=particles,
@@ -218,7 +206,7 @@ def naive_likelihoods(model, poses: np.ndarray, data: LaserScanData) -> np.ndarr
 def speed(particles: int, updates: int, seed: int) -> dict:
     m = load("demo_rooms")
     truth = route(m, 60.0, seed)
-    odom = odometry(truth, seed)
+    odom = noisy_odometry(truth, seed)
     params = AmclParams(
         min_particles=particles,
         max_particles=particles,

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from workbench.bus import Bus, Node
-from workbench.mapping.geometry import between, compose
+from workbench.mapping.geometry import compose
 from workbench.mapping.map_server_node import LoadedMap, MapServer, load_map_yaml
 from workbench.msgs import Time
 from workbench.msgs.geometry_msgs import TransformStamped
@@ -23,7 +23,9 @@ from workbench.msgs.sensor_msgs import LaserScan
 from workbench.msgs.tf2_msgs import TFMessage
 from workbench.navigation.amcl_laser import LaserScanData, prepare_ranges
 from workbench.navigation.amcl_map import AmclMap
+from workbench.navigation.amcl_messages import set_planar
 from workbench.navigation.amcl_node import Amcl
+from workbench.navigation.amcl_simulate import noisy_odometry, simulated_ranges
 
 REPO = Path(__file__).resolve().parents[2]
 DEMO_ROOMS = REPO / "mapping" / "demo_rooms.yaml"
@@ -63,26 +65,9 @@ def tour(step: float = 0.05, waypoints=WAYPOINTS) -> np.ndarray:
     return np.array(poses)
 
 
-def noisy_odometry(truth: np.ndarray, seed: int = 0, scale: float = 1.03) -> np.ndarray:
-    """Odometry of ``truth`` whose steps are ``scale`` too long, with seeded noise per step
-    in proportion to the step (5 % of the distance, 2 % of the turn plus 0.02 rad per m)."""
-    rng = np.random.default_rng(seed)
-    odom = [truth[0].copy()]
-    for a, b in zip(truth[:-1], truth[1:], strict=True):
-        step = between(a, b)
-        distance = float(np.hypot(step[0], step[1]))
-        step[:2] *= scale
-        sd = np.array([0.05 * distance, 0.05 * distance, 0.02 * abs(step[2]) + 0.02 * distance])
-        odom.append(compose(odom[-1], step + rng.normal(0.0, 1.0, 3) * sd))
-    return np.array(odom)
-
-
 def scan_ranges(m: AmclMap, base_pose: np.ndarray, rng: np.random.Generator) -> np.ndarray:
     """Readings of the laser at ``base_pose`` ray-cast in ``m`` (no return: inf)."""
-    sensor = compose(base_pose, MOUNT)
-    ranges = m.calc_ranges(sensor, ANGLES, RANGE_MAX)
-    noisy = ranges + rng.normal(0.0, 0.01, BEAMS)
-    return np.where(ranges >= RANGE_MAX, np.inf, noisy)
+    return simulated_ranges(m, compose(base_pose, MOUNT), ANGLES, RANGE_MAX, rng)
 
 
 def scan_data(ranges: np.ndarray) -> LaserScanData:
@@ -95,10 +80,8 @@ def transform(parent: str, child: str, pose: np.ndarray, stamp: float, z: float 
     msg.header.frame_id = parent
     msg.header.stamp = Time.from_sec(stamp)
     msg.child_frame_id = child
-    msg.transform.translation.x, msg.transform.translation.y = float(pose[0]), float(pose[1])
+    set_planar(msg.transform.translation, msg.transform.rotation, pose)
     msg.transform.translation.z = z
-    msg.transform.rotation.z = math.sin(pose[2] / 2)
-    msg.transform.rotation.w = math.cos(pose[2] / 2)
     return msg
 
 
@@ -208,3 +191,6 @@ def initial_guess(truth: np.ndarray, offset=(0.5, -0.4, 0.25)) -> dict:
         "initial_pose_y": float(truth[1] + offset[1]),
         "initial_pose_a": float(truth[2] + offset[2]),
     }
+
+
+__all__ = ["noisy_odometry"]  # re-exported for the tests
