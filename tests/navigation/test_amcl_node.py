@@ -81,6 +81,10 @@ def test_the_node_localises_the_robot_and_publishes_map_to_odom(bus, capsys):
     assert tf_stamp / 1e9 == pytest.approx(robot.t + 0.1)
     mid = robot.t - robot.dt / 2  # between two scans tf interpolates map -> base_link
     assert buffer.can_transform("map", "base_link", mid)
+    # the pose is saved into ~initial_pose_* every 2 s (save_pose_rate 0.5), as savePoseToServer
+    saved = np.array([bus.params.get(f"/amcl/initial_pose_{c}") for c in "xya"])
+    assert np.hypot(*(saved[:2] - truth[-1][:2])) < 0.15
+    assert bus.params.get("/amcl/initial_cov_xx") == pytest.approx(cov[0, 0])
     # latched: a late subscriber gets the last pose at once
     late: list = []
     Node("late", bus=bus, disable_rosout=True).create_subscription(
@@ -169,6 +173,28 @@ def test_global_localization_and_nomotion_update_services(bus):
     robot.step(pose, pose)
     assert amcl.wait_idle()
     assert amcl.localizer.updates == updates + 1
+
+
+def test_set_map_takes_the_map_and_the_initial_pose(bus, capsys):
+    from workbench.msgs.nav_msgs import GetMap, SetMap
+
+    serve_map(bus)
+    amcl = start(bus)
+    assert wait_until(lambda: amcl.localizer is not None)
+    caller = Node("caller", bus=bus, disable_rosout=True)
+    grid = caller.create_client("/static_map", GetMap).call(GetMap.Request(), timeout=5).map
+    request = SetMap.Request(map=grid)
+    request.initial_pose.header.frame_id = "map"
+    request.initial_pose.pose.pose.position.x = 6.0
+    request.initial_pose.pose.pose.position.y = 2.0
+    request.initial_pose.pose.pose.orientation.w = 1.0
+    request.initial_pose.pose.covariance[0] = request.initial_pose.pose.covariance[7] = 0.01
+    response = caller.create_client("/set_map", SetMap).call(request, timeout=10)
+    assert response.success
+    assert amcl.localizer.pf.mean[:2] == pytest.approx([6.0, 2.0], abs=0.02)
+    output = Output(capsys)
+    assert output.has("Setting pose")
+    assert output.text.count("Received a 203 X 163 map @ 0.050 m/pix") == 2
 
 
 def test_the_map_topic_is_used_with_use_map_topic(bus, capsys):

@@ -22,7 +22,16 @@ def procs(tmp_path):
 
 
 def test_amcl_waits_for_the_map_server_then_stops_on_sigterm(procs):
-    amcl = procs.start("-m", "workbench", "run", "amcl", "amcl", name="amcl")
+    amcl = procs.start(
+        "-m",
+        "workbench",
+        "run",
+        "amcl",
+        "amcl",
+        "_initial_pose_x:=1.0",
+        "_kld_err:=0.02",
+        name="amcl",
+    )
     procs.wait_output(amcl, "Requesting the map...")
     procs.wait_output(amcl, "Request for map failed; trying again...")
     server = procs.start(
@@ -31,6 +40,15 @@ def test_amcl_waits_for_the_map_server_then_stops_on_sigterm(procs):
     procs.wait_output(amcl, "Received a 203 X 163 map @ 0.050 m/pix")
     procs.wait_output(amcl, "Done initializing likelihood field model.")
     assert amcl.poll() is None
+    from workbench.bus import Bus
+
+    bus = Bus.connect(procs.uri)
+    try:
+        assert bus.params.get("/amcl/initial_pose_x") == 1.0
+        assert bus.params.get("/amcl/kld_err") == 0.02
+        assert bus.wait_for_service("/global_localization", timeout=30)
+    finally:
+        bus.shutdown()
     amcl.send_signal(signal.SIGTERM)
     assert amcl.wait(60) == 128 + signal.SIGTERM
     assert "Traceback" not in procs.output(amcl)

@@ -32,6 +32,10 @@ def angle_diff(a: np.ndarray | float, b: np.ndarray | float) -> np.ndarray | flo
     return float(out) if out.ndim == 0 else out
 
 
+def _scalar_diff(a: float, b: float) -> float:
+    return float(angle_diff(a, b))
+
+
 @dataclass(frozen=True)
 class OdomModel:
     """An odometry motion model with its noise parameters.
@@ -75,11 +79,11 @@ class OdomModel:
         old_theta = odom_pose[2] - delta[2]
         trans = float(np.hypot(delta[0], delta[1]))
         # in-place rotation: no bearing from two nearly equal positions
-        rot1 = 0.0 if trans < 0.01 else angle_diff(np.arctan2(delta[1], delta[0]), old_theta)
-        rot2 = angle_diff(delta[2], rot1)
+        rot1 = 0.0 if trans < 0.01 else _scalar_diff(np.arctan2(delta[1], delta[0]), old_theta)
+        rot2 = _scalar_diff(delta[2], rot1)
         # backward and forward motion get the same noise
-        rot1_noise = min(abs(angle_diff(rot1, 0.0)), abs(angle_diff(rot1, np.pi)))
-        rot2_noise = min(abs(angle_diff(rot2, 0.0)), abs(angle_diff(rot2, np.pi)))
+        rot1_noise = min(abs(_scalar_diff(rot1, 0.0)), abs(_scalar_diff(rot1, np.pi)))
+        rot2_noise = min(abs(_scalar_diff(rot2, 0.0)), abs(_scalar_diff(rot2, np.pi)))
         a1, a2, a3, a4 = self.alpha1, self.alpha2, self.alpha3, self.alpha4
         sd_rot1 = a1 * rot1_noise**2 + a2 * trans**2
         sd_trans = a3 * trans**2 + a4 * rot1_noise**2 + a4 * rot2_noise**2

@@ -231,7 +231,8 @@ class Amcl:
     def _wait_for_tf(self, target: str, source: str, stamp: Any) -> tuple[bool, str]:
         deadline = time.monotonic() + TF_WAIT
         while True:
-            ok, why = self.buffer.can_transform(target, source, stamp, return_debug_tuple=True)
+            answer = self.buffer.can_transform(target, source, stamp, return_debug_tuple=True)
+            ok, why = answer if isinstance(answer, tuple) else (answer, "")
             if ok or time.monotonic() > deadline or self._stopping:
                 return bool(ok), str(why)
             time.sleep(0.005)
