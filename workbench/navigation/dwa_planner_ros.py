@@ -6,7 +6,8 @@ Parameters under ``~DWAPlannerROS`` with dwa_local_planner's names and defaults 
 ``max_vel_theta`` 1.0 / ``min_vel_theta`` 0.4 (older ``max_rot_vel``/``min_rot_vel``; the
 smallest useful turn rate), ``acc_lim_x``/``acc_lim_y`` 2.5, ``acc_lim_theta`` 3.2,
 ``sim_time`` 1.7, ``sim_granularity`` 0.025, ``angular_sim_granularity`` 0.1,
-``vx_samples`` 3, ``vy_samples`` 10, ``vth_samples`` 20, ``path_distance_bias`` 32,
+``vx_samples`` 3, ``vy_samples`` 10, ``vth_samples`` 20 (0 or less: 1, with dwa_planner's
+warning; turtlebot3's burger sets ``vy_samples: 0``), ``path_distance_bias`` 32,
 ``goal_distance_bias`` 24, ``occdist_scale`` 0.01, ``forward_point_distance`` 0.325,
 ``xy_goal_tolerance`` 0.10, ``yaw_goal_tolerance`` 0.05, ``latch_xy_goal_tolerance`` false,
 ``prune_plan`` true, ``use_dwa`` true; ``controller_frequency`` searched upwards.
@@ -46,6 +47,19 @@ def velocity_samples(low: float, high: float, count: int) -> np.ndarray:
     return values
 
 
+def samples_count(node: Any, reader: ParamReader, name: str, axis: str, default: int) -> int:
+    """A ``v*_samples`` parameter; 0 or less becomes 1 with dwa_planner's warning."""
+    value = reader.integer(name, default, minimum=-(2**31))
+    if value > 0:
+        return value
+    node.get_logger().warn(
+        f"You've specified that you don't want any samples in the {axis} dimension. We'll at "
+        f"least assume that you want to sample one value... so we're going to set {name} to 1 "
+        "instead"
+    )
+    return 1
+
+
 class DWAPlannerROS(TrajectoryPlannerROS):
     """``dwa_local_planner/DWAPlannerROS`` on the shared rollout and scoring machinery."""
 
@@ -66,8 +80,8 @@ class DWAPlannerROS(TrajectoryPlannerROS):
             sim_time=r.number("sim_time", 1.7, positive=True),
             sim_granularity=sim_granularity,
             angular_sim_granularity=r.number("angular_sim_granularity", 0.1, positive=True),
-            vx_samples=r.integer("vx_samples", 3),
-            vtheta_samples=r.integer("vth_samples", 20),
+            vx_samples=samples_count(node, r, "vx_samples", "x", 3),
+            vtheta_samples=samples_count(node, r, "vth_samples", "theta", 20),
             path_distance_bias=r.number("path_distance_bias", 32.0),
             goal_distance_bias=r.number("goal_distance_bias", 24.0),
             occdist_scale=r.number("occdist_scale", 0.01),
@@ -80,7 +94,7 @@ class DWAPlannerROS(TrajectoryPlannerROS):
         self.min_vel_trans = r.number_either("min_vel_trans", "min_trans_vel", 0.1)
         self.max_vel_y = r.number("max_vel_y", 0.1)
         self.min_vel_y = r.number("min_vel_y", -0.1)
-        self.vy_samples = r.integer("vy_samples", 10)
+        self.vy_samples = samples_count(node, r, "vy_samples", "y", 10)
         host = {
             "xy_goal_tolerance": r.number("xy_goal_tolerance", 0.10),
             "yaw_goal_tolerance": r.number("yaw_goal_tolerance", 0.05),
