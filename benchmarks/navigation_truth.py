@@ -147,7 +147,12 @@ class ShortestPaths:
             corners.append(cells[j])
             i = j
         points = [self.truth.point(k % w, k // w) for k in corners]
-        length = float(sum(np.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(points, points[1:])))
+        length = float(
+            sum(
+                np.hypot(b[0] - a[0], b[1] - a[1])
+                for a, b in zip(points[:-1], points[1:], strict=True)
+            )
+        )
         return length, points
 
     def _visible(self, a: int, b: int) -> bool:
