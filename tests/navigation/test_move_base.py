@@ -187,6 +187,17 @@ def test_dwa_local_planner_reaches_the_goal() -> None:
     assert nav.robot.closest > nav.robot.radius
 
 
+def test_dwa_takes_zero_samples_as_one_with_dwa_planners_warning() -> None:
+    # turtlebot3_navigation's burger file sets vy_samples: 0; dwa_planner.cpp's reconfigure
+    # samples one value then, with this warning
+    nav = Navigation(**{**DWA, "DWAPlannerROS/vy_samples": 0})
+    assert nav.move_base.controller.vy_samples == 1
+    assert (
+        "You've specified that you don't want any samples in the y dimension. We'll at least "
+        "assume that you want to sample one value... so we're going to set vy_samples to 1 instead"
+    ) in nav.text()
+
+
 def test_robot_boxed_in_by_a_new_obstacle_is_aborted_and_stopped(nav: Navigation) -> None:
     from workbench.mapping.simulate import box_segments
 
