@@ -172,3 +172,21 @@ def test_the_layer_reinflates_when_obstacles_change_and_reuses_an_unchanged_resu
         assert (layered.master.costs == 0).all()
     finally:
         bus.shutdown()
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_inflating_only_near_the_changes_equals_inflating_everything(seed):
+    from workbench.navigation.costmap_inflation import inflate, inflate_changes
+
+    rng = np.random.default_rng(seed)
+    first = np.where(rng.random((80, 90)) < 0.03, 254, 0).astype(np.uint8)
+    first[:5, :] = 255
+    inflated = first.copy()
+    inflate(inflated, 0.05, 0.5, 0.1, 3.0)
+    second = first.copy()
+    second[40:43, 10:12] = 254  # a new obstacle
+    second[70, 85] = 0  # one cleared
+    expected = second.copy()
+    inflate(expected, 0.05, 0.5, 0.1, 3.0)
+    assert np.array_equal(inflate_changes(first, inflated, second, 0.05, 0.5, 0.1, 3.0), expected)
+    assert np.array_equal(inflate_changes(first, inflated, first, 0.05, 0.5, 0.1, 3.0), inflated)

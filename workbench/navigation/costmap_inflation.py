@@ -67,6 +67,47 @@ def inflate(
     costs[near] = np.where(unknown, np.where(takes, cost, old), np.maximum(old, cost))
 
 
+def inflate_changes(
+    old_before: np.ndarray,
+    old_after: np.ndarray,
+    costs: np.ndarray,
+    resolution: float,
+    inflation_radius: float,
+    inscribed_radius: float,
+    cost_scaling_factor: float,
+    inflate_unknown: bool = False,
+) -> np.ndarray:
+    """:func:`inflate` of ``costs`` given that ``old_before`` inflated to ``old_after``.
+
+    A cell's inflated cost depends on its own cost and the lethal cells within the
+    inflation radius R, so only cells within R of a changed cell change; they are computed
+    from a window reaching R further. Returns the inflated grid (``costs`` is kept).
+    """
+    changed = old_before != costs
+    rows = np.flatnonzero(changed.any(axis=1))
+    if rows.size == 0:
+        return old_after.copy()
+    cols = np.flatnonzero(changed.any(axis=0))
+    r = int(max(0.0, math.ceil(inflation_radius / resolution)))
+    h, w = costs.shape
+    inner = (
+        max(int(rows[0]) - r, 0),
+        min(int(rows[-1]) + r + 1, h),
+        max(int(cols[0]) - r, 0),
+        min(int(cols[-1]) + r + 1, w),
+    )
+    outer = (max(inner[0] - r, 0), min(inner[1] + r, h), max(inner[2] - r, 0), min(inner[3] + r, w))
+    window = costs[outer[0] : outer[1], outer[2] : outer[3]].copy()
+    inflate(
+        window, resolution, inflation_radius, inscribed_radius, cost_scaling_factor, inflate_unknown
+    )
+    out = old_after.copy()
+    out[inner[0] : inner[1], inner[2] : inner[3]] = window[
+        inner[0] - outer[0] : inner[1] - outer[0], inner[2] - outer[2] : inner[3] - outer[2]
+    ]
+    return out
+
+
 class InflationLayer(Layer):
     """Costs falling off with the distance to obstacles.
 
@@ -92,8 +133,9 @@ class InflationLayer(Layer):
     def update_costs(self, master: Costmap2D, layered: LayeredCostmap) -> None:
         """Inflate the master grid's lethal cells.
 
-        When the grid and the parameters are those of the last update, its result is
-        reused (a global costmap mostly stays the same between updates).
+        When the parameters and the grid's size are those of the last update, only the
+        cells near what changed are inflated again (a global costmap mostly stays the
+        same between updates: the obstacle layer marks around the robot).
         """
         settings = (
             master.resolution,
@@ -103,13 +145,12 @@ class InflationLayer(Layer):
             float(self.inflate_unknown),
         )
         last = self._last
-        if (
-            last is not None
-            and last[0] == settings
-            and last[1].shape == master.costs.shape
-            and np.array_equal(last[1], master.costs)
-        ):
-            master.costs[:] = last[2]
+        if last is not None and last[0] == settings and last[1].shape == master.costs.shape:
+            before = master.costs.copy()
+            master.costs[:] = inflate_changes(
+                last[1], last[2], before, *settings[:4], inflate_unknown=self.inflate_unknown
+            )
+            self._last = (settings, before, master.costs.copy())
             return
         before = master.costs.copy()
         inflate(master.costs, *settings[:4], inflate_unknown=self.inflate_unknown)
@@ -120,4 +161,4 @@ class InflationLayer(Layer):
         self._last = None
 
 
-__all__ = ["InflationLayer", "compute_cost", "inflate"]
+__all__ = ["InflationLayer", "compute_cost", "inflate", "inflate_changes"]

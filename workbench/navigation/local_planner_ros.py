@@ -27,6 +27,15 @@ from workbench.navigation.trajectory_map_grid import distance_maps
 from workbench.navigation.trajectory_rollout import CostGrid, RolloutParams, TrajectoryPlanner
 
 
+def heard(pub: Any) -> bool:
+    """Whether anyone subscribes ``pub``'s topic: this process's subscriptions first (cheap),
+    the whole graph only when the bus reaches other processes."""
+    bus = pub.node.bus
+    if bus.local.subscribers_of(pub.topic):
+        return True
+    return bool(bus.is_connected and pub.get_num_connections() > 0)
+
+
 def _sign(v: float) -> float:
     return -1.0 if v < 0 else 1.0
 
@@ -93,7 +102,7 @@ class LocalPlannerHost:
 
     def publish_path(self, pub: Any, poses: np.ndarray) -> None:
         """Publish ``(n, 3)`` poses as a nav_msgs/Path in the local costmap's frame (if heard)."""
-        if pub.get_num_connections() == 0:
+        if not heard(pub):
             return
         from workbench.msgs.geometry_msgs import PoseStamped
         from workbench.msgs.nav_msgs import Path

@@ -13,6 +13,7 @@ do not squeeze between two obstacles touching at a corner.
 
 from __future__ import annotations
 
+import copy
 import functools
 import math
 import threading
@@ -162,8 +163,10 @@ def grid_graph(cell_cost: np.ndarray, key: Hashable | None = None) -> Any:
     if last is not None and last[0].shape == cell_cost.shape:
         weights = patched_weights(last[0], last[1].data, cell_cost)
     if weights is None:
-        weights = edge_weights(cell_cost)
-    graph = csr_matrix((weights, indices, indptr), shape=(n, n))
+        graph = csr_matrix((edge_weights(cell_cost), indices, indptr), shape=(n, n))
+    else:  # the same structure (checked when it was built) with the new weights
+        graph = copy.copy(last[1])
+        graph.data = weights
     with _GRAPHS_LOCK:
         _LAST[:] = [(cell_cost.copy(), graph)]
         if key is not None:
