@@ -131,7 +131,7 @@ def _colour(value: Any, default: tuple[float, float, float]) -> tuple[float, flo
         rgb = tuple(min(max(float(p) / 255.0, 0.0), 1.0) for p in parts)
     except ValueError:
         return default
-    return rgb if len(rgb) == 3 else default  # type: ignore[return-value]
+    return (rgb[0], rgb[1], rgb[2]) if len(rgb) == 3 else default
 
 
 def _flatten(entries: Any) -> list[dict[str, Any]]:

@@ -25,7 +25,7 @@ def _pose_transform(pose: Any) -> Any:
     )
 
 
-def _rgba(rgb: tuple[float, float, float], alpha: float = 1.0) -> Any:
+def _rgba(rgb: tuple[float, ...], alpha: float = 1.0) -> Any:
     from pydrake.geometry import Rgba
 
     return Rgba(rgb[0], rgb[1], rgb[2], alpha)

@@ -189,8 +189,11 @@ class PoseTools:
         old = {n: meshcat.GetSliderValue(n) for n in SLIDERS if n in present}
         x_min, x_max, y_min, y_max = extent
         centre = ((x_min + x_max) / 2.0, (y_min + y_max) / 2.0)
-        ranges = ((x_min, x_max, 0.05, centre[0]), (y_min, y_max, 0.05, centre[1]))
-        ranges += ((-180.0, 180.0, 1.0, 0.0),)
+        ranges = (
+            (x_min, x_max, 0.05, centre[0]),
+            (y_min, y_max, 0.05, centre[1]),
+            (-180.0, 180.0, 1.0, 0.0),
+        )
         for name, (low, high, step, start) in zip(SLIDERS, ranges, strict=True):
             value = float(np.clip(old.get(name, start), low, high))
             if name in present:
