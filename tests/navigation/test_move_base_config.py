@@ -159,20 +159,3 @@ def test_node_with_an_unknown_planner_exits_with_one_line() -> None:
     errors = [line for line in result.stderr.splitlines() if "error" in line.lower()]
     assert len(errors) == 1 and "carrot_planner/CarrotPlanner" in errors[0], result.stderr
     assert "Traceback" not in result.stderr
-
-
-def test_sample_counts_below_one_are_clamped_as_dynamic_reconfigure_clamps_them() -> None:
-    # BaseLocalPlanner.cfg and DWAPlanner.cfg give vx/vy/vth(eta)_samples a minimum of 1 and
-    # dynamic_reconfigure raises a smaller value to it: turtlebot3's DWA file has vy_samples 0
-    node = param_node(
-        **{"TrajectoryPlannerROS/vx_samples": 0, "TrajectoryPlannerROS/vtheta_samples": -4}
-    )
-    params, _ = trajectory_planner_params(node, "~TrajectoryPlannerROS")
-    assert (params.vx_samples, params.vtheta_samples) == (1, 1)
-    with pytest.raises(
-        PlannerParameterError,
-        match="/move_base/TrajectoryPlannerROS/vx_samples must be an integer >= 1, got 'ten'",
-    ):
-        trajectory_planner_params(
-            param_node(**{"TrajectoryPlannerROS/vx_samples": "ten"}), "~TrajectoryPlannerROS"
-        )

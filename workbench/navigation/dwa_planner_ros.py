@@ -71,8 +71,8 @@ class DWAPlannerROS(TrajectoryPlannerROS):
             sim_time=r.number("sim_time", 1.7, positive=True),
             sim_granularity=sim_granularity,
             angular_sim_granularity=r.number("angular_sim_granularity", 0.1, positive=True),
-            vx_samples=r.integer("vx_samples", 3, clamp=True),
-            vtheta_samples=r.integer("vth_samples", 20, clamp=True),
+            vx_samples=r.integer("vx_samples", 3),
+            vtheta_samples=r.integer("vth_samples", 20),
             path_distance_bias=r.number("path_distance_bias", 32.0),
             goal_distance_bias=r.number("goal_distance_bias", 24.0),
             occdist_scale=r.number("occdist_scale", 0.01),
@@ -85,7 +85,7 @@ class DWAPlannerROS(TrajectoryPlannerROS):
         self.min_vel_trans = r.number_either("min_vel_trans", "min_trans_vel", 0.1)
         self.max_vel_y = r.number("max_vel_y", 0.1)
         self.min_vel_y = r.number("min_vel_y", -0.1)
-        self.vy_samples = r.integer("vy_samples", 10, clamp=True)
+        self.vy_samples = r.integer("vy_samples", 10)
         host = {
             "xy_goal_tolerance": r.number("xy_goal_tolerance", 0.10),
             "yaw_goal_tolerance": r.number("yaw_goal_tolerance", 0.05),

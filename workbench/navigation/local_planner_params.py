@@ -49,13 +49,8 @@ class ParamReader:
             )
         return float(value)
 
-    def integer(self, name: str, default: int, *, minimum: int = 1, clamp: bool = False) -> int:
-        """An integer ``>= minimum``; with ``clamp`` a smaller one is raised to ``minimum``,
-        as dynamic_reconfigure clamps a planner's parameter to its .cfg bounds (the sample
-        counts' lower bound is 1: turtlebot3's ``vy_samples: 0`` runs as 1 in ROS)."""
+    def integer(self, name: str, default: int, *, minimum: int = 1) -> int:
         value = self.node.get_param(self.key(name), default)
-        if clamp and isinstance(value, int) and not isinstance(value, bool):
-            value = max(value, minimum)
         if isinstance(value, bool) or not isinstance(value, int) or value < minimum:
             raise PlannerParameterError(
                 f"parameter {self.node.resolve_name(self.key(name))} must be an integer >= {minimum}, "
@@ -163,8 +158,8 @@ def trajectory_planner_params(node: Any, prefix: str) -> tuple[RolloutParams, di
         sim_time=r.number("sim_time", 1.0, positive=True),
         sim_granularity=sim_granularity,
         angular_sim_granularity=r.number("angular_sim_granularity", sim_granularity, positive=True),
-        vx_samples=r.integer("vx_samples", 3, clamp=True),
-        vtheta_samples=r.integer("vtheta_samples", 20, clamp=True),
+        vx_samples=r.integer("vx_samples", 3),
+        vtheta_samples=r.integer("vtheta_samples", 20),
         path_distance_bias=r.number_either("path_distance_bias", "pdist_scale", 0.6),
         goal_distance_bias=r.number_either("goal_distance_bias", "gdist_scale", 0.8),
         occdist_scale=r.number("occdist_scale", 0.01),
