@@ -187,6 +187,17 @@ def test_dwa_local_planner_reaches_the_goal() -> None:
     assert nav.robot.closest > nav.robot.radius
 
 
+def test_dwa_takes_zero_samples_as_one_with_dwa_planners_warning() -> None:
+    # turtlebot3_navigation's burger file sets vy_samples: 0; dwa_planner.cpp's reconfigure
+    # samples one value then, with this warning
+    nav = Navigation(**{**DWA, "DWAPlannerROS/vy_samples": 0})
+    assert nav.move_base.controller.vy_samples == 1
+    assert (
+        "You've specified that you don't want any samples in the y dimension. We'll at least "
+        "assume that you want to sample one value... so we're going to set vy_samples to 1 instead"
+    ) in nav.text()
+
+
 def test_robot_boxed_in_by_a_new_obstacle_is_aborted_and_stopped(nav: Navigation) -> None:
     from workbench.mapping.simulate import box_segments
 
@@ -221,3 +232,28 @@ def test_oscillation_timeout_aborts(nav: Navigation) -> None:
         == "Robot is oscillating. Even after executing recovery behaviors."
     )
     assert "Aborting because the robot appears to be oscillating over and over" in nav.text()
+
+
+def test_dwa_oscillation_flags_hold_a_flip_until_the_robot_moved() -> None:
+    # base_local_planner's OscillationCostFunction: forward then backward -> only backward
+    # until 0.05 m (oscillation_reset_dist) from where it flipped; a new plan clears it
+    import numpy as np
+
+    from workbench.navigation.dwa_planner_ros import OscillationFlags
+
+    flags = OscillationFlags(0.05, 0.2)
+    samples = np.array([[0.2, 0.0, 0.0], [-0.2, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]])
+    flags.update(np.zeros(3), (0.2, 0.0, 0.0), 0.1)
+    assert not flags.refused(samples).any()
+    flags.update(np.array([0.01, 0.0, 0.0]), (-0.2, 0.0, 0.0), 0.1)
+    assert flags.refused(samples).tolist() == [True, False, False, False]
+    flags.update(np.array([0.0, 0.03, 0.0]), (-0.2, 0.0, 0.0), 0.1)
+    assert flags.refused(samples)[0]  # 0.03 m from the flip: still held
+    flags.update(np.array([0.0, -0.06, 0.0]), (-0.2, 0.0, 0.0), 0.1)
+    assert not flags.refused(samples).any()  # moved 0.06 m: free again
+    # turning left then right while standing: only right until it turned 0.2 rad
+    flags.update(np.zeros(3), (0.0, 0.0, 1.0), 0.1)
+    flags.update(np.zeros(3), (0.0, 0.0, -1.0), 0.1)
+    assert flags.refused(samples).tolist() == [False, False, True, False]
+    flags.reset()
+    assert not flags.refused(samples).any()

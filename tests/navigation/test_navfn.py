@@ -152,3 +152,21 @@ def test_an_unreachable_goal_in_a_closed_room_stops_once_the_robots_room_is_spre
     path = navfn_plan(cm, (0.55, 0.55), (1.55, 0.55))
     assert path and path_length(path) > 10.0
     assert len(calls) == 2 and calls[1] == 4 * calls[0]  # spread further once
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_a_graph_patched_where_the_costmap_changed_equals_one_built_anew(seed):
+    from workbench.navigation.navfn_grid import edge_weights, patched_weights
+
+    rng = np.random.default_rng(seed)
+    costs = rng.integers(0, 200, (60, 80)).astype(np.uint8)
+    before = cell_costs(costs)
+    weights = edge_weights(before)
+    for y, x, h, w in ((0, 0, 3, 5), (57, 75, 3, 5), (20, 30, 4, 1), (59, 0, 1, 80)):
+        changed = costs.copy()
+        changed[y : y + h, x : x + w] = rng.choice([0, 120, 253, 254, 255], size=(h, w))
+        after = cell_costs(changed)
+        patched = patched_weights(before, weights, after)
+        assert patched is not None and np.array_equal(patched, edge_weights(after))
+    everything = cell_costs(np.full_like(costs, 254))
+    assert patched_weights(before, weights, everything) is None  # rebuilt, not patched

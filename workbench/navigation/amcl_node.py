@@ -58,6 +58,9 @@ from workbench.navigation.amcl_params import AmclParams, read_params, strip_slas
 
 #: Wall seconds a scan waits for its transforms (amcl's message filter holds it meanwhile).
 TF_WAIT = 0.5
+#: Wall seconds between two looks at tf while a scan waits (a fast simulation sends the
+#: odometry for a scan's stamp within a millisecond or two).
+TF_POLL = 0.0005
 #: Scans held at most (the message filter's queue size).
 QUEUE = 100
 #: Bus seconds without scans before amcl warns (``laser_check_interval_``).
@@ -235,7 +238,7 @@ class Amcl:
             ok, why = answer if isinstance(answer, tuple) else (answer, "")
             if ok or time.monotonic() > deadline or self._stopping:
                 return bool(ok), str(why)
-            time.sleep(0.005)
+            time.sleep(TF_POLL)
 
     def _scan_arrived(self, msg: Any) -> None:
         """The tf message filter: pass the scan on once ``odom -> frame`` is known at its stamp."""

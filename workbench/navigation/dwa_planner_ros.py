@@ -6,8 +6,10 @@ Parameters under ``~DWAPlannerROS`` with dwa_local_planner's names and defaults 
 ``max_vel_theta`` 1.0 / ``min_vel_theta`` 0.4 (older ``max_rot_vel``/``min_rot_vel``; the
 smallest useful turn rate), ``acc_lim_x``/``acc_lim_y`` 2.5, ``acc_lim_theta`` 3.2,
 ``sim_time`` 1.7, ``sim_granularity`` 0.025, ``angular_sim_granularity`` 0.1,
-``vx_samples`` 3, ``vy_samples`` 10, ``vth_samples`` 20, ``path_distance_bias`` 32,
+``vx_samples`` 3, ``vy_samples`` 10, ``vth_samples`` 20 (0 or less: 1, with dwa_planner's
+warning; turtlebot3's burger sets ``vy_samples: 0``), ``path_distance_bias`` 32,
 ``goal_distance_bias`` 24, ``occdist_scale`` 0.01, ``forward_point_distance`` 0.325,
+``oscillation_reset_dist`` 0.05, ``oscillation_reset_angle`` 0.2,
 ``xy_goal_tolerance`` 0.10, ``yaw_goal_tolerance`` 0.05, ``latch_xy_goal_tolerance`` false,
 ``prune_plan`` true, ``use_dwa`` true; ``controller_frequency`` searched upwards.
 
@@ -16,11 +18,13 @@ period (zero added when the window spans it), drops samples slower than both min
 or faster than ``max_vel_trans``, simulates them at constant velocity (with ``use_dwa``; else
 accelerating within the limits over ``sim_time``) and scores each by its end point:
 ``0.5 res path_distance_bias`` x (path distance + path distance of the point
-``forward_point_distance`` ahead, the latter dropped within that distance of the goal) +
+``forward_point_distance`` ahead) +
 ``0.5 res goal_distance_bias`` x (goal distance + distance of the point ahead to the goal
-moved ahead the same way) + ``occdist_scale`` x the largest footprint cost. Near the goal
+moved ahead the same way; both points ahead count only farther than
+``forward_point_distance`` from the goal) + ``occdist_scale`` x the largest footprint cost; samples the
+oscillation flags forbid (:class:`OscillationFlags`) are refused. Near the goal
 it stops and rotates as TrajectoryPlannerROS does, and :meth:`is_goal_reached` logs
-``Goal reached``. dwa_local_planner's oscillation and twirling costs and the speed-scaled
+``Goal reached``. dwa_local_planner's twirling cost and the speed-scaled
 footprint are not modelled.
 """
 
@@ -51,6 +55,71 @@ def velocity_samples(low: float, high: float, count: int) -> np.ndarray:
     return values
 
 
+def samples_count(node: Any, reader: ParamReader, name: str, axis: str, default: int) -> int:
+    """A ``v*_samples`` parameter; 0 or less becomes 1 with dwa_planner's warning."""
+    value = reader.integer(name, default, minimum=-(2**31))
+    if value > 0:
+        return value
+    node.get_logger().warn(
+        f"You've specified that you don't want any samples in the {axis} dimension. We'll at "
+        f"least assume that you want to sample one value... so we're going to set {name} to 1 "
+        "instead"
+    )
+    return 1
+
+
+class OscillationFlags:
+    """base_local_planner's ``OscillationCostFunction`` as dwa_local_planner uses it.
+
+    Once the chosen command flips between forward and backward (or, while hardly moving,
+    between turning left and right), the opposite direction is refused until the robot
+    has moved ``reset_dist`` (m) or turned ``reset_angle`` (rad) from where it flipped;
+    a new global plan clears the flags (``DWAPlanner::setPlan``).
+    """
+
+    def __init__(self, reset_dist: float, reset_angle: float) -> None:
+        self.reset_dist = reset_dist
+        self.reset_angle = reset_angle
+        self.reset()
+        self.prev = np.zeros(3)
+
+    def reset(self) -> None:
+        self.moving = {"x": 0, "th": 0}  # the sign last chosen
+        self.only = {"x": 0, "th": 0}  # the only sign allowed (0: any)
+
+    def refused(self, samples: np.ndarray) -> np.ndarray:
+        """The samples ``(N, 3)`` the flags forbid."""
+        out = np.zeros(len(samples), dtype=bool)
+        for key, column in (("x", 0), ("th", 2)):
+            if self.only[key]:
+                out |= np.sign(samples[:, column]) == -self.only[key]
+        return out
+
+    def update(
+        self, pose: np.ndarray, chosen: tuple[float, float, float], min_trans: float
+    ) -> None:
+        """``updateOscillationFlags`` after a valid command was chosen at ``pose``."""
+        flipped = self._flip("x", chosen[0])
+        if abs(chosen[0]) <= min_trans:
+            flipped = self._flip("th", chosen[2]) or flipped
+        if flipped:
+            self.prev = np.array(pose[:3], dtype=float)
+        if any(self.only.values()):
+            moved = math.hypot(pose[0] - self.prev[0], pose[1] - self.prev[1])
+            if moved > self.reset_dist or abs(pose[2] - self.prev[2]) > self.reset_angle:
+                self.reset()
+
+    def _flip(self, key: str, value: float) -> bool:
+        sign = int(np.sign(value))
+        if sign == 0:
+            return False
+        flipped = self.moving[key] == -sign
+        if flipped:
+            self.only[key] = sign
+        self.moving[key] = sign
+        return flipped
+
+
 class DWAPlannerROS(TrajectoryPlannerROS):
     """``dwa_local_planner/DWAPlannerROS`` on the shared rollout and scoring machinery."""
 
@@ -71,8 +140,8 @@ class DWAPlannerROS(TrajectoryPlannerROS):
             sim_time=r.number("sim_time", 1.7, positive=True),
             sim_granularity=sim_granularity,
             angular_sim_granularity=r.number("angular_sim_granularity", 0.1, positive=True),
-            vx_samples=r.integer("vx_samples", 3),
-            vtheta_samples=r.integer("vth_samples", 20),
+            vx_samples=samples_count(node, r, "vx_samples", "x", 3),
+            vtheta_samples=samples_count(node, r, "vth_samples", "theta", 20),
             path_distance_bias=r.number("path_distance_bias", 32.0),
             goal_distance_bias=r.number("goal_distance_bias", 24.0),
             occdist_scale=r.number("occdist_scale", 0.01),
@@ -85,7 +154,10 @@ class DWAPlannerROS(TrajectoryPlannerROS):
         self.min_vel_trans = r.number_either("min_vel_trans", "min_trans_vel", 0.1)
         self.max_vel_y = r.number("max_vel_y", 0.1)
         self.min_vel_y = r.number("min_vel_y", -0.1)
-        self.vy_samples = r.integer("vy_samples", 10)
+        self.vy_samples = samples_count(node, r, "vy_samples", "y", 10)
+        self.oscillation = OscillationFlags(
+            r.number("oscillation_reset_dist", 0.05), r.number("oscillation_reset_angle", 0.2)
+        )
         host = {
             "xy_goal_tolerance": r.number("xy_goal_tolerance", 0.10),
             "yaw_goal_tolerance": r.number("yaw_goal_tolerance", 0.05),
@@ -171,13 +243,16 @@ class DWAPlannerROS(TrajectoryPlannerROS):
         goal_ahead, _ = grid.lookup(front.goal, ahead, front.impossible + 1)
         near_goal = math.hypot(goal[0] - pose[0], goal[1] - pose[1]) <= p.heading_lookahead
         align = 0.0 if near_goal else 1.0
-        blocked = (path_ahead >= maps.impossible) & (align > 0) | (goal_ahead >= front.impossible)
+        # within forward_point_distance of the goal the nose's costs are off (dwa_planner.cpp:
+        # "trying to keep the nose close to anything destabilizes behavior")
+        blocked = ((path_ahead >= maps.impossible) | (goal_ahead >= front.impossible)) & (align > 0)
         cost = (
             0.5 * res * p.path_distance_bias * (path_end + align * path_ahead)
-            + 0.5 * res * p.goal_distance_bias * (goal_end + goal_ahead)
+            + 0.5 * res * p.goal_distance_bias * (goal_end + align * goal_ahead)
             + scored.cost
         )
-        cost = np.where((scored.cost < 0) | blocked, -1.0, cost)
+        refused = self.oscillation.refused(samples)
+        cost = np.where((scored.cost < 0) | blocked | refused, -1.0, cost)
         legal = np.flatnonzero(cost >= 0)
         if len(legal) == 0:
             self.node.get_logger().debug(
@@ -189,11 +264,16 @@ class DWAPlannerROS(TrajectoryPlannerROS):
             return False, (0.0, 0.0, 0.0)
         best = int(legal[np.argmin(cost[legal])])
         vx, vy, vth = (float(v) for v in samples[best])
+        self.oscillation.update(pose, (vx, vy, vth), self.min_vel_trans)
         self.node.get_logger().debug(
             f"A valid velocity command of ({vx:.2f}, {vy:.2f}, {vth:.2f}) was found for this cycle."
         )
         self.publish_path(self.local_pub, scored.poses[best, : scored.steps[best]])
         return True, (vx, vy, vth)
+
+    def on_new_plan(self) -> None:
+        super().on_new_plan()
+        self.oscillation.reset()
 
     def _maps(self, grid: CostGrid, pose: np.ndarray, window: np.ndarray) -> Any:
         self._window = window

@@ -107,6 +107,41 @@ def edge_weights(cell_cost: np.ndarray) -> np.ndarray:
 _GRAPHS: OrderedDict[Hashable, Any] = OrderedDict()
 _GRAPHS_KEPT = 4
 _GRAPHS_LOCK = threading.Lock()
+#: The last graph built and the cell costs it was built from: a costmap that changed in a
+#: small window (the obstacle layer around the robot) gets a copy with that window redone.
+_LAST: list[tuple[np.ndarray, Any]] = []
+#: Largest share of the grid a changed window may cover to be patched rather than rebuilt.
+PATCH_SHARE = 0.25
+
+
+def patched_weights(
+    old_cost: np.ndarray, old_weights: np.ndarray, cell_cost: np.ndarray
+) -> np.ndarray | None:
+    """:func:`edge_weights` of ``cell_cost`` from those of ``old_cost`` (same shape), redoing
+    only the cells around the ones that changed; None when too much changed."""
+    changed = old_cost != cell_cost
+    rows = np.flatnonzero(changed.any(axis=1))
+    if rows.size == 0:
+        return old_weights.copy()
+    cols = np.flatnonzero(changed.any(axis=0))
+    size_y, size_x = cell_cost.shape
+    # sources whose 8 slots read a changed cell lie within one cell of it; their slots
+    # read costs up to one cell further, so the window computed has two cells of margin
+    y0, y1 = max(int(rows[0]) - 2, 0), min(int(rows[-1]) + 3, size_y)
+    x0, x1 = max(int(cols[0]) - 2, 0), min(int(cols[-1]) + 3, size_x)
+    if (y1 - y0) * (x1 - x0) > PATCH_SHARE * cell_cost.size:
+        return None
+    window = edge_weights(cell_cost[y0:y1, x0:x1]).reshape(y1 - y0 + 2, x1 - x0 + 2, 8)
+    weights = old_weights.copy()
+    full = weights.reshape(size_y + 2, size_x + 2, 8)
+    # padded rows/columns of the sources redone: one cell in from the window's edge, except
+    # where the window reaches the grid's edge (its padding is the grid's padding there)
+    a = 0 if y0 == 0 else 2
+    b = y1 - y0 + 2 if y1 == size_y else y1 - y0
+    c = 0 if x0 == 0 else 2
+    d = x1 - x0 + 2 if x1 == size_x else x1 - x0
+    full[y0 + a : y0 + b, x0 + c : x0 + d] = window[a:b, c:d]
+    return weights
 
 
 def grid_graph(cell_cost: np.ndarray, key: Hashable | None = None) -> Any:
@@ -121,9 +156,17 @@ def grid_graph(cell_cost: np.ndarray, key: Hashable | None = None) -> Any:
                 return graph
     indptr, indices = grid_edges(*cell_cost.shape)
     n = indptr.size - 1
-    graph = csr_matrix((edge_weights(cell_cost), indices, indptr), shape=(n, n))
-    if key is not None:
-        with _GRAPHS_LOCK:
+    weights = None
+    with _GRAPHS_LOCK:
+        last = _LAST[0] if _LAST else None
+    if last is not None and last[0].shape == cell_cost.shape:
+        weights = patched_weights(last[0], last[1].data, cell_cost)
+    if weights is None:
+        weights = edge_weights(cell_cost)
+    graph = csr_matrix((weights, indices, indptr), shape=(n, n))
+    with _GRAPHS_LOCK:
+        _LAST[:] = [(cell_cost.copy(), graph)]
+        if key is not None:
             _GRAPHS[key] = graph
             while len(_GRAPHS) > _GRAPHS_KEPT:
                 _GRAPHS.popitem(last=False)
@@ -134,6 +177,7 @@ def clear_graph_cache() -> None:
     """Forget the cached graphs."""
     with _GRAPHS_LOCK:
         _GRAPHS.clear()
+        _LAST.clear()
 
 
 def potential(
@@ -195,6 +239,7 @@ __all__ = [
     "edge_weights",
     "grid_graph",
     "grid_edges",
+    "patched_weights",
     "path_cells",
     "potential",
 ]
