@@ -8,7 +8,7 @@ import pytest
 from workbench.mapping import LikelihoodField, Scan, SlamConfig, build_map, match_scan, run_slam
 from workbench.mapping.corridors import corridor_log, corridor_world
 from workbench.mapping.evaluate import absolute_trajectory_error
-from workbench.mapping.incremental import fuse_with_odometry
+from workbench.mapping.incremental import fuse_with_odometry, lean_on_odometry
 from workbench.mapping.scan import densify
 from workbench.mapping.uncertainty import score_surface_covariance
 
@@ -113,10 +113,16 @@ def test_a_corridor_match_is_unconstrained_along_the_corridor_and_odometry_fills
     assert sy < 0.05 and st < np.radians(1.0)  # across and in heading: well known
     # The fused pose keeps the odometry along the corridor, the match across it.
     odometry = np.array([0.31, 0.2, 0.0])
+    fused = lean_on_odometry(result.pose, odometry, result.covariance)
+    assert fused[0] == pytest.approx(0.31, abs=1e-9)
+    assert fused[1] == pytest.approx(result.pose[1], abs=1e-9)
+    # Weighed by the two variances: along the corridor nearly all odometry, across it
+    # (where the match is surer than the odometry) the match.
     odometry_covariance = np.diag([0.03**2, 0.03**2, np.radians(2.0) ** 2])
-    fused = fuse_with_odometry(result.pose, result.covariance, odometry, odometry_covariance)
-    assert fused[0] == pytest.approx(0.31, abs=0.01)
-    assert fused[1] == pytest.approx(result.pose[1], abs=0.01)
+    weighed = fuse_with_odometry(result.pose, result.covariance, odometry, odometry_covariance)
+    assert weighed[0] == pytest.approx(0.31, abs=0.01)
+    assert weighed[1] == pytest.approx(result.pose[1], abs=1e-9)
+    assert weighed[2] == result.pose[2]
 
 
 def test_a_wall_across_the_corridor_constrains_the_match_along_it():

@@ -58,6 +58,12 @@ class SlamConfig:
         covariance_floor: Std devs (x, y, theta) added to every match covariance.
         points_per_measurement: How many scan points count as one independent
             measurement in the score-surface covariance.
+        weigh_odometry: Move each match's position toward the odometry's prediction along
+            directions where the match's variance is over twice the odometry's (from
+            ``odometry_noise``), by their variance-weighted mean. A live robot's wheel
+            odometry between two scans is good to millimetres while a match along a wall
+            can slide by centimetres; logs whose odometry has a scale bias map better
+            without (only unconstrained directions then take the odometry).
         odometry_noise: Std devs of odometry ``(m per m, m per rad, rad per m, rad per
             rad)`` (as GMapping's ``srr srt str stt``).
         surface_bridge: Gaps up to this long between collinear scan points are filled in
@@ -105,6 +111,7 @@ class SlamConfig:
     odometry_sigma: tuple[float, float, float] = (0.1, 0.1, float(np.radians(5.0)))
     loop_sigma: tuple[float, float, float] = (0.03, 0.03, float(np.radians(1.0)))
     match_covariance: bool = True
+    weigh_odometry: bool = False
     covariance_floor: tuple[float, float, float] = (0.01, 0.01, float(np.radians(0.2)))
     points_per_measurement: float = 4.0
     odometry_noise: tuple[float, float, float, float] = (0.1, 0.05, 0.02, 0.1)

@@ -102,6 +102,9 @@ class GmappingParams:
             temporal_update=self.temporal_update,
             max_urange=max_urange,
             match_range=max_urange,
+            # Live: odometry from the robot's encoders at every scan, as GMapping's motion
+            # model uses it.
+            weigh_odometry=True,
             # The estimator's own grid starts no larger than a scan's reach and grows; the
             # published map is padded to the initial bounds.
             map_size=min(max(self.xmax - self.xmin, self.ymax - self.ymin), 2 * max_urange + 2),

@@ -8,8 +8,9 @@ are placed by odometry from the last processed one, which costs almost
 nothing. A processed scan is matched against a local map of the last
 keyframes (cached until the keyframes change) starting from the odometry
 prediction. With ``match_covariance`` the match's score-surface covariance
-tells which directions the match pins down: the pose is the information-weighted
-mean of match and odometry prediction, so along a corridor's axis the odometry wins. After enough motion the scan becomes
+tells which directions the match pins down: along the others (a corridor's
+axis) the odometry prediction is kept, and with ``weigh_odometry`` the position
+leans toward it wherever the match is clearly less sure than the odometry. After enough motion the scan becomes
 a keyframe, a pose-graph node whose edge to the previous node carries the
 information of odometry and match together; each new keyframe then tries a
 loop closure (:mod:`workbench.mapping.loops`).
@@ -47,6 +48,20 @@ def match_points(scan: Scan, match_range: float) -> np.ndarray:
         ok &= scan.ranges < match_range
     r, a = scan.ranges[ok], scan.angles[ok]
     return np.stack([r * np.cos(a), r * np.sin(a)], axis=1)
+
+
+def lean_on_odometry(match: np.ndarray, guess: np.ndarray, covariance: np.ndarray) -> np.ndarray:
+    """``match`` with its position along unconstrained directions taken from ``guess``.
+
+    A direction is unconstrained when the covariance's std dev along it
+    exceeds 1 m (the score surface marks those with a huge variance).
+    """
+    values, vectors = np.linalg.eigh(covariance[:2, :2])
+    free = vectors[:, values > 1.0]
+    out = np.asarray(match, dtype=float).copy()
+    if free.shape[1]:
+        out[:2] += free @ (free.T @ (guess[:2] - match[:2]))
+    return out
 
 
 def fuse_with_odometry(
@@ -351,10 +366,12 @@ class Slam:
             self._scores[index] = result.score
         if matched and result is not None:
             pose = result.pose
-            if result.covariance is not None:
+            if result.covariance is not None and cfg.weigh_odometry:
                 moved = odometry_covariance(delta, cfg.odometry_noise)
                 prior = to_frame(moved, -float(prev_pose[2]))
                 pose = fuse_with_odometry(result.pose, result.covariance, guess, prior)
+            elif result.covariance is not None:
+                pose = lean_on_odometry(result.pose, guess, result.covariance)
         last_pose = self.graph.nodes[last]
         rel = between(last_pose, pose)
         moved = np.hypot(rel[0], rel[1]) >= cfg.keyframe_distance
