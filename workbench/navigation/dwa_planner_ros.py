@@ -209,6 +209,7 @@ class DWAPlannerROS(TrajectoryPlannerROS):
             (grid.origin_x, grid.origin_y),
             front[:, :2],
             maps.within_robot,
+            with_path=False,
         )
 
     def drive(
@@ -238,14 +239,18 @@ class DWAPlannerROS(TrajectoryPlannerROS):
         res = grid.resolution
         path_end, _ = grid.lookup(maps.path, ends[:, :2], maps.impossible + 1)
         goal_end, _ = grid.lookup(maps.goal, ends[:, :2], maps.impossible + 1)
-        path_ahead, _ = grid.lookup(maps.path, ahead, maps.impossible + 1)
-        front = self._front_maps(grid, pose, self._window, maps)
-        goal_ahead, _ = grid.lookup(front.goal, ahead, front.impossible + 1)
-        near_goal = math.hypot(goal[0] - pose[0], goal[1] - pose[1]) <= p.heading_lookahead
-        align = 0.0 if near_goal else 1.0
         # within forward_point_distance of the goal the nose's costs are off (dwa_planner.cpp:
         # "trying to keep the nose close to anything destabilizes behavior")
-        blocked = ((path_ahead >= maps.impossible) | (goal_ahead >= front.impossible)) & (align > 0)
+        near_goal = math.hypot(goal[0] - pose[0], goal[1] - pose[1]) <= p.heading_lookahead
+        align = 0.0 if near_goal else 1.0
+        if near_goal:
+            path_ahead = goal_ahead = np.zeros(len(samples))
+            blocked = np.zeros(len(samples), dtype=bool)
+        else:
+            path_ahead, _ = grid.lookup(maps.path, ahead, maps.impossible + 1)
+            front = self._front_maps(grid, pose, self._window, maps)
+            goal_ahead, _ = grid.lookup(front.goal, ahead, front.impossible + 1)
+            blocked = (path_ahead >= maps.impossible) | (goal_ahead >= front.impossible)
         cost = (
             0.5 * res * p.path_distance_bias * (path_end + align * path_ahead)
             + 0.5 * res * p.goal_distance_bias * (goal_end + align * goal_ahead)

@@ -102,6 +102,8 @@ def distance_maps(
     origin: tuple[float, float],
     plan: np.ndarray,
     within_robot: np.ndarray | None = None,
+    *,
+    with_path: bool = True,
 ) -> DistanceMaps:
     """The path and goal distance maps for ``plan`` (world ``(n, 2)``) on a costmap.
 
@@ -111,6 +113,7 @@ def distance_maps(
         origin: World position of cell (0, 0)'s corner (m).
         plan: The global plan's points in the costmap's frame (m).
         within_robot: Boolean mask of cells under the robot's footprint (never obstacles).
+        with_path: Spread the path map too (False: only the goal map; ``path`` is it too).
     """
     cells_count = float(costs.size)
     obstacle = (
@@ -122,11 +125,11 @@ def distance_maps(
         obstacle &= ~within_robot
     passable = ~obstacle
     seeds = plan_cells(costs, resolution, origin, plan)
-    path = spread(seeds, passable, cells_count, cells_count + 1.0)
+    path = spread(seeds, passable, cells_count, cells_count + 1.0) if with_path else None
     goal_xy = None
     goal_seed = seeds[-1:]
     if len(goal_seed):
         mx, my = goal_seed[0]
         goal_xy = (origin[0] + (mx + 0.5) * resolution, origin[1] + (my + 0.5) * resolution)
     goal = spread(goal_seed, passable, cells_count, cells_count + 1.0)
-    return DistanceMaps(path, goal, goal_xy, cells_count, within_robot)
+    return DistanceMaps(goal if path is None else path, goal, goal_xy, cells_count, within_robot)
