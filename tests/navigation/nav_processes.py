@@ -1,50 +1,17 @@
-"""Helpers for the navigation tests that run the labs' launch files as processes: start a
-launch file as a student does (no terminal on stdin), read the simulator's true pose of a
-model, wait for move_base's results, and find a launched node's log."""
+"""Helpers for the navigation tests that run the labs' launch files as processes: read the
+simulator's true pose of a model, wait for move_base's results, find a launched node's log
+(``process_helpers.launched`` starts the launch files)."""
 
 from __future__ import annotations
 
-import contextlib
 import math
-import os
 import re
-import signal
-import subprocess
-import sys
 import time
-from collections.abc import Iterator
 from pathlib import Path
 
 from process_helpers import wait_for
 
 from workbench.msgs import gazebo_msgs as gm
-
-
-@contextlib.contextmanager
-def launched(uri: str, log_path: Path, *argv: str) -> Iterator[subprocess.Popen]:
-    """``workbench launch ARGV`` in its own session on the core at ``uri``; stopped with
-    SIGINT (as Ctrl-C) at the end, then killed if it lingers."""
-    env = dict(os.environ, WORKBENCH_MASTER_URI=uri, PYTHONUNBUFFERED="1")
-    env.pop("WORKBENCH_DEBUG", None)
-    with open(log_path, "wb") as log:
-        launch = subprocess.Popen(
-            [sys.executable, "-m", "workbench", "launch", *argv],
-            env=env,
-            cwd=log_path.parent,
-            stdout=log,
-            stderr=subprocess.STDOUT,
-            stdin=subprocess.DEVNULL,  # keyboard teleops need a terminal: they say so and stop
-            start_new_session=True,
-        )
-    try:
-        yield launch
-    finally:
-        os.killpg(launch.pid, signal.SIGINT)
-        try:
-            launch.wait(60)
-        except subprocess.TimeoutExpired:
-            os.killpg(launch.pid, signal.SIGKILL)
-            launch.wait()
 
 
 def node_log(launch_log: Path, node: str, timeout: float = 60.0) -> Path:

@@ -15,8 +15,8 @@ import time
 
 import pytest
 from meshcat_client import MeshcatPanel
-from nav_processes import Results, launched, node_log, true_pose, wait_text
-from process_helpers import private_core, wait_for
+from nav_processes import Results, node_log, true_pose, wait_text
+from process_helpers import launched, private_core, wait_for
 
 from workbench.bus import Bus, Node
 from workbench.msgs.geometry_msgs import PoseStamped

@@ -12,8 +12,8 @@ import time
 
 import pytest
 from meshcat_client import MeshcatPanel
-from nav_processes import launched, node_log, true_pose, wait_text
-from process_helpers import private_core, wait_for
+from nav_processes import node_log, true_pose, wait_text
+from process_helpers import launched, private_core, wait_for
 
 from workbench.actionlib import SUCCEEDED, SimpleActionClient
 from workbench.bus import Bus, Node
