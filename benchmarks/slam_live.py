@@ -287,10 +287,10 @@ def main(argv: list[str] | None = None) -> int:
     return 0
 
 
-def report(result: dict[str, Any]) -> None:
+def report(result: dict[str, Any], title: str = "live SLAM in the house") -> None:
     m = result["machine"]
     print(f"machine: {m['cpu']}, {m['usable_cores']} cores, load {m['load_average']}")
-    print(f"live SLAM in the house: {result['simulated_s']:.0f} simulated s, seed {result['seed']}")
+    print(f"{title}: {result['simulated_s']:.0f} simulated s, seed {result['seed']}")
     source = "encoders" if result["odometry"] == "encoder" else "Gazebo's true pose, as shipped"
     print(f"| measure | slam_gmapping | dead reckoning ({source}) | target |\n|---|---|---|---|")
     slam, odom, quality = result["slam"], result["dead_reckoning"], result["map"]
@@ -304,7 +304,9 @@ def report(result: dict[str, Any]) -> None:
         f"| real-time factor | {result['rtf_slam_and_sim']:.1f}× (simulator + SLAM) | "
         f"{result['rtf_sim_alone']:.1f}× (simulator alone) | ≥ {TARGETS['rtf']:g}× |"
     )
-    scans = result["scans"]
+    scans = result.get("scans")
+    if scans is None:
+        return
     print(
         f"scans: {scans['received']} received, {scans['processed']} processed, "
         f"{scans['dropped']} dropped"

@@ -38,7 +38,7 @@ from pathlib import Path
 from typing import Any
 
 from machine import describe  # noqa: E402
-from slam_live import ROBOT, TARGETS, encoder_urdf, errors, map_quality  # noqa: E402
+from slam_live import ROBOT, encoder_urdf, errors, map_quality, report  # noqa: E402
 
 from workbench.paths import examples_dir, urdf_dir
 
@@ -221,29 +221,8 @@ def main(argv: list[str] | None = None) -> int:
     }
     args.out.parent.mkdir(parents=True, exist_ok=True)
     args.out.write_text(json.dumps(result, indent=1))
-    report(result)
+    report(result, "live SLAM in the house, one process per node")
     return 0
-
-
-def report(result: dict[str, Any]) -> None:
-    m = result["machine"]
-    print(f"machine: {m['cpu']}, {m['usable_cores']} cores, load {m['load_average']}")
-    print(
-        f"live SLAM in the house, one process per node: {result['simulated_s']:.0f} simulated s,"
-        f" {result['odometry']} odometry"
-    )
-    slam, odom, quality = result["slam"], result["dead_reckoning"], result["map"]
-    print("| measure | slam_gmapping | dead reckoning | target |\n|---|---|---|---|")
-    print(
-        f"| position error RMS (max) | {slam['rms_m']:.3f} m ({slam['max_m']:.3f}) | "
-        f"{odom['rms_m']:.3f} m ({odom['max_m']:.3f}) | ≤ {TARGETS['ate_m']} m |"
-    )
-    print(f"| map precision | {quality['precision']:.3f} | — | ≥ {TARGETS['precision']} |")
-    print(f"| map recall | {quality['recall']:.3f} | — | — |")
-    print(
-        f"| real-time factor | {result['rtf_slam_and_sim']:.1f}× (simulator + SLAM) | "
-        f"{result['rtf_sim_alone']:.1f}× (simulator alone) | ≥ {TARGETS['rtf']:g}× |"
-    )
 
 
 if __name__ == "__main__":

@@ -151,3 +151,30 @@ def _wait_or_kill(popen: subprocess.Popen, timeout: float = 10.0) -> None:
     except subprocess.TimeoutExpired:
         popen.kill()
         popen.wait()
+
+
+@contextlib.contextmanager
+def launched(uri: str, log_path: Path, *argv: str) -> Iterator[subprocess.Popen]:
+    """``workbench launch ARGV`` in its own session on the core at ``uri``; stopped with
+    SIGINT (as Ctrl-C) at the end, then killed if it lingers."""
+    env = dict(os.environ, WORKBENCH_MASTER_URI=uri, PYTHONUNBUFFERED="1")
+    env.pop("WORKBENCH_DEBUG", None)
+    with open(log_path, "wb") as log:
+        launch = subprocess.Popen(
+            [sys.executable, "-m", "workbench", "launch", *argv],
+            env=env,
+            cwd=log_path.parent,
+            stdout=log,
+            stderr=subprocess.STDOUT,
+            stdin=subprocess.DEVNULL,  # keyboard teleops need a terminal: they say so and stop
+            start_new_session=True,
+        )
+    try:
+        yield launch
+    finally:
+        os.killpg(launch.pid, signal.SIGINT)
+        try:
+            launch.wait(60)
+        except subprocess.TimeoutExpired:
+            os.killpg(launch.pid, signal.SIGKILL)
+            launch.wait()

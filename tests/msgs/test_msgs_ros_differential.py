@@ -25,6 +25,7 @@ PACKAGES = (
     "actionlib_msgs",
     "diagnostic_msgs",
     "geometry_msgs",
+    "move_base_msgs",
     "nav_msgs",
     "rosgraph_msgs",
     "sensor_msgs",

@@ -130,6 +130,10 @@ def test_dwa_velocity_samples_include_zero() -> None:
     assert velocity_samples(-1.0, 1.0, 4).tolist() == pytest.approx([-1.0, -1 / 3, 0.0, 1 / 3, 1.0])
     assert velocity_samples(0.1, 0.5, 3).tolist() == pytest.approx([0.1, 0.3, 0.5])
     assert velocity_samples(0.2, 0.2, 1).tolist() == [0.2]
+    # VelocityIterator: two samples at least when the ends differ, even if low > high (a
+    # window pinned by acc_lim_y 0 while odometry reports vy 4e-6: the TurtleBot3's DWA)
+    assert velocity_samples(0.0, 0.3, 1).tolist() == [0.0, 0.3]
+    assert velocity_samples(4e-6, 0.0, 1).tolist() == [4e-6, 0.0]
     assert np.all(np.diff(velocity_samples(-0.5, 0.2, 8)) > 0)
 
 

@@ -2,9 +2,8 @@
 
 from __future__ import annotations
 
-import struct
-
 import numpy as np
+from meshcat_client import msgpack
 
 from workbench.msgs.geometry_msgs import Point
 
@@ -66,21 +65,9 @@ def _rgba_tuple(rgba) -> tuple[float, float, float, float]:
     return (rgba.r(), rgba.g(), rgba.b(), rgba.a())
 
 
-def _msgpack(value) -> bytes:
-    """MessagePack of a dict of short strings and floats (what Meshcat's browser sends)."""
-    if isinstance(value, dict):
-        return bytes([0x80 | len(value)]) + b"".join(
-            _msgpack(k) + _msgpack(v) for k, v in value.items()
-        )
-    if isinstance(value, str):
-        data = value.encode()
-        return (bytes([0xA0 | len(data)]) if len(data) < 32 else bytes([0xD9, len(data)])) + data
-    return b"\xcb" + struct.pack(">d", float(value))
-
-
 def click(meshcat, label: str) -> None:
     """A click on button ``label``, as the browser's control panel reports it."""
-    meshcat._InjectWebsocketMessage(_msgpack({"type": "button", "name": label}))
+    meshcat._InjectWebsocketMessage(msgpack({"type": "button", "name": label}))
 
 
 def marker(kind: int, marker_id: int = 0, ns: str = "test", frame: str = "map", **fields):

@@ -43,8 +43,13 @@ from workbench.navigation.trajectory_rollout import CostGrid, RolloutParams
 
 
 def velocity_samples(low: float, high: float, count: int) -> np.ndarray:
-    """dwa's ``VelocityIterator``: ``count`` evenly spaced values, plus 0 inside the range."""
-    values = np.linspace(low, high, max(count, 1)) if count > 1 else np.array([low])
+    """base_local_planner's ``VelocityIterator``: ``low`` alone when ``low == high``, else
+    ``max(count, 2)`` evenly spaced values from ``low`` to ``high`` (also when ``low > high``:
+    a window the acceleration limit pins, e.g. ``acc_lim_y`` 0 with odometry's vy a hair off
+    zero, still gives its two ends), plus 0 inside a range that crosses it."""
+    if low == high:
+        return np.array([low])
+    values = np.linspace(low, high, max(count, 2))
     if low < 0.0 < high and not np.any(np.abs(values) < 1e-12):
         values = np.sort(np.append(values, 0.0))
     return values
@@ -181,10 +186,7 @@ class DWAPlannerROS(TrajectoryPlannerROS):
             min(p.max_vel_theta, vel[2] + p.acc_lim_theta * horizon),
         ]
         counts = (p.vx_samples, self.vy_samples, p.vtheta_samples)
-        axes = [
-            velocity_samples(lo[i], hi[i], counts[i]) if lo[i] <= hi[i] else np.array([])
-            for i in range(3)
-        ]
+        axes = [velocity_samples(lo[i], hi[i], counts[i]) for i in range(3)]
         grid = np.array(np.meshgrid(*axes, indexing="ij")).reshape(3, -1).T
         vmag = np.hypot(grid[:, 0], grid[:, 1])
         eps = 1e-4
