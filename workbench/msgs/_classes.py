@@ -29,6 +29,40 @@ from workbench.msgs._fields import (
 class FieldError(MessageError, AttributeError):
     """A message has no field of that name."""
 
+    _hint: str | None = None
+    _name: str = ""
+    _fields: tuple[str, ...] = ()
+
+    @classmethod
+    def no_field(cls, typename: str, name: str, fields: tuple[str, ...]) -> FieldError:
+        """``typename`` has no field ``name``; the hint (the closest of ``fields``) is
+        worked out when shown: attribute probes (``hasattr(msg, name)``,
+        ``getattr(msg, name, default)``) raise this often, in tf's and navigation's hot
+        paths, and never show it."""
+        error = cls.__new__(cls)
+        error.message = f"{typename} has no field '{name}'"
+        error.path, error.line = None, None
+        error._name, error._fields = name, fields
+        Exception.__init__(error, error.message)
+        return error
+
+    @property
+    def hint(self) -> str | None:
+        if self._hint is None and self._name:
+            import difflib
+
+            close = difflib.get_close_matches(self._name, self._fields, n=1)
+            fields = ", ".join(self._fields) or "none"
+            self._hint = f"did you mean '{close[0]}'?" if close else f"its fields are: {fields}"
+        return self._hint
+
+    @hint.setter
+    def hint(self, value: str | None) -> None:
+        self._hint = value
+
+    def __str__(self) -> str:
+        return self.one_line()
+
 
 class FieldTypeError(MessageError, TypeError):
     """A value does not fit the field it is assigned to."""
@@ -152,12 +186,7 @@ def _rebuild(typename: str, values: tuple) -> Message:
 
 
 def _unknown_field(cls: type[Message], name: str) -> FieldError:
-    import difflib
-
-    close = difflib.get_close_matches(name, cls.__slots__, n=1)
-    fields = ", ".join(cls.__slots__) or "none"
-    hint = f"did you mean '{close[0]}'?" if close else f"its fields are: {fields}"
-    return FieldError(f"{cls._type} has no field '{name}'", hint=hint)
+    return FieldError.no_field(cls._type, name, tuple(cls.__slots__))
 
 
 class ServiceType:

@@ -162,7 +162,7 @@ def grid_graph(cell_cost: np.ndarray, key: Hashable | None = None) -> Any:
         last = _LAST[0] if _LAST else None
     if last is not None and last[0].shape == cell_cost.shape:
         weights = patched_weights(last[0], last[1].data, cell_cost)
-    if weights is None:
+    if weights is None or last is None:
         graph = csr_matrix((edge_weights(cell_cost), indices, indptr), shape=(n, n))
     else:  # the same structure (checked when it was built) with the new weights
         graph = copy.copy(last[1])
