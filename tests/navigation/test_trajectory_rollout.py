@@ -233,3 +233,46 @@ def test_rotations_keep_a_footprint_check() -> None:
         (0.6, 0.8, 0.01),
     )
     assert s.cost[0] == -1.0 and s.cost[1] >= 0
+
+
+def _queue_spread(seeds, passable, blocked_value, unreachable):
+    """MapGrid's queue (map_grid.cpp computeTargetDistance), cell by cell."""
+    from collections import deque
+
+    dist = np.full(passable.shape, unreachable)
+    queue = deque()
+    for mx, my in seeds:
+        dist[my, mx] = 0.0
+        queue.append((mx, my))
+    seen = {(int(mx), int(my)) for mx, my in seeds}
+    while queue:
+        mx, my = queue.popleft()
+        for nx, ny in ((mx + 1, my), (mx - 1, my), (mx, my + 1), (mx, my - 1)):
+            if not (0 <= nx < passable.shape[1] and 0 <= ny < passable.shape[0]):
+                continue
+            if (nx, ny) in seen:
+                continue
+            if not passable[ny, nx]:
+                dist[ny, nx] = blocked_value
+                continue
+            seen.add((nx, ny))
+            dist[ny, nx] = dist[my, mx] + 1.0
+            queue.append((nx, ny))
+    return dist
+
+
+def test_distance_spreading_equals_map_grids_queue_on_random_grids():
+    from workbench.navigation.trajectory_map_grid import spread
+
+    rng = np.random.default_rng(4)
+    for _ in range(60):
+        shape = (int(rng.integers(3, 40)), int(rng.integers(3, 40)))
+        passable = rng.random(shape) > rng.uniform(0.0, 0.5)
+        count = int(rng.integers(1, 12))
+        seeds = np.stack(
+            [rng.integers(0, shape[1], count), rng.integers(0, shape[0], count)], axis=1
+        )
+        np.testing.assert_array_equal(
+            spread(seeds, passable, 999.0, 1000.0),
+            _queue_spread(seeds, passable, 999.0, 1000.0),
+        )

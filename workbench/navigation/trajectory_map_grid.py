@@ -10,7 +10,7 @@ cell; lethal, inscribed and unknown cells are obstacles (distance = the map's ce
 the cell count + 1 (``unreachableCellCosts``). A trajectory point whose distance reaches
 the cell count is "impossible".
 
-The spreading is a numpy wavefront (one dilation per unit of distance) instead of a queue.
+The spreading runs as scipy's Dijkstra over unit edges instead of a queue.
 """
 
 from __future__ import annotations
@@ -67,32 +67,62 @@ def plan_cells(
     return cells[first:end]
 
 
+_NEIGHBOURS: dict[tuple[int, int], tuple[np.ndarray, np.ndarray]] = {}
+
+
+def _neighbour_edges(shape: tuple[int, int]) -> tuple[np.ndarray, np.ndarray]:
+    """Every directed 4-neighbour edge ``(from, to)`` of a grid, sorted by ``from``."""
+    edges = _NEIGHBOURS.get(shape)
+    if edges is None:
+        index = np.arange(shape[0] * shape[1]).reshape(shape)
+        pairs = [
+            (index[:, :-1], index[:, 1:]),
+            (index[:, 1:], index[:, :-1]),
+            (index[:-1, :], index[1:, :]),
+            (index[1:, :], index[:-1, :]),
+        ]
+        source = np.concatenate([a.ravel() for a, _ in pairs])
+        target = np.concatenate([b.ravel() for _, b in pairs])
+        order = np.argsort(source, kind="stable")
+        edges = _NEIGHBOURS[shape] = (source[order], target[order])
+    return edges
+
+
 def spread(
     seeds: np.ndarray, passable: np.ndarray, blocked_value: float, unreachable: float
 ) -> np.ndarray:
-    """4-connected unit-step distances from ``seeds`` (mx, my) over ``passable`` cells."""
+    """4-connected unit-step distances from ``seeds`` (mx, my) over ``passable`` cells.
+
+    A seed spreads whether passable or not; a blocked cell next to a reached one gets
+    ``blocked_value``, any other cell not reached ``unreachable``. Breadth first as
+    MapGrid's queue, run as scipy's Dijkstra over the passable cells' unit edges.
+    """
+    from scipy.sparse import csr_matrix
+    from scipy.sparse.csgraph import dijkstra
+
     dist = np.full(passable.shape, unreachable)
     if len(seeds) == 0:
         return dist
-    reached = np.zeros(passable.shape, dtype=bool)
-    reached[seeds[:, 1], seeds[:, 0]] = True
-    dist[reached] = 0.0
-    frontier = reached.copy()
-    blocked = ~passable
-    touched_block = np.zeros_like(reached)
-    level = 0.0
-    while frontier.any():
-        level += 1.0
-        grown = np.zeros_like(frontier)
-        grown[1:, :] |= frontier[:-1, :]
-        grown[:-1, :] |= frontier[1:, :]
-        grown[:, 1:] |= frontier[:, :-1]
-        grown[:, :-1] |= frontier[:, 1:]
-        touched_block |= grown & blocked
-        frontier = grown & passable & ~reached
-        reached |= frontier
-        dist[frontier] = level
-    dist[touched_block & ~reached] = blocked_value
+    shape = passable.shape
+    cells = passable.size
+    source, target = _neighbour_edges(shape)
+    starts = np.unique(seeds[:, 1] * shape[1] + seeds[:, 0])
+    open_cells = passable.ravel()
+    leaves = open_cells.copy()
+    leaves[starts] = True
+    keep = leaves[source] & open_cells[target]
+    indptr = np.zeros(cells + 1, dtype=np.int64)
+    np.cumsum(np.bincount(source[keep], minlength=cells), out=indptr[1:])
+    graph = csr_matrix((np.ones(int(keep.sum())), target[keep], indptr), shape=(cells, cells))
+    found = dijkstra(graph, directed=True, indices=starts, min_only=True).reshape(shape)
+    reached = np.isfinite(found)
+    dist[reached] = found[reached]
+    near = reached.copy()
+    near[1:, :] |= reached[:-1, :]
+    near[:-1, :] |= reached[1:, :]
+    near[:, 1:] |= reached[:, :-1]
+    near[:, :-1] |= reached[:, 1:]
+    dist[near & ~passable & ~reached] = blocked_value
     return dist
 
 
