@@ -170,3 +170,23 @@ def test_a_graph_patched_where_the_costmap_changed_equals_one_built_anew(seed):
         assert patched is not None and np.array_equal(patched, edge_weights(after))
     everything = cell_costs(np.full_like(costs, 254))
     assert patched_weights(before, weights, everything) is None  # rebuilt, not patched
+
+
+def test_plans_on_a_costmap_changing_cycle_by_cycle_equal_plans_on_graphs_built_anew():
+    """navfn patches its last graph in place as the costmap changes; every plan must be
+    the one a fresh graph gives (nothing of an earlier costmap may leak into it)."""
+    from workbench.navigation.navfn_grid import clear_graph_cache
+
+    rng = np.random.default_rng(11)
+    costs = np.zeros((60, 80), np.uint8)
+    costs[20:40, 30] = 254
+    plans = []
+    for _ in range(12):
+        costs = costs.copy()
+        y, x = rng.integers(5, 55), rng.integers(5, 75)
+        costs[y : y + 3, x : x + 3] = rng.choice([0, 120, 254])
+        costmap = Costmap2D(costs, 0.05, 0.0, 0.0)
+        plans.append((costmap, navfn_plan(costmap, (0.3, 0.3), (3.7, 2.6))))
+    for costmap, plan in plans:
+        clear_graph_cache()
+        assert navfn_plan(costmap, (0.3, 0.3), (3.7, 2.6)) == plan

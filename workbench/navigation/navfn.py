@@ -34,6 +34,7 @@ from workbench.navigation.costmap_grid import Costmap2D
 from workbench.navigation.costmap_params import Params
 from workbench.navigation.navfn_grid import (
     COST_NEUTRAL,
+    PLAN_LOCK,
     POT_HIGH,
     cell_costs,
     grid_graph,
@@ -179,8 +180,9 @@ def navfn_plan(
             allow_unknown,
             hashlib.blake2b(costmap.costs.tobytes(), digest_size=16).digest(),
         )
-        graph = grid_graph(cell_cost, key)
-        best, pred = _spread(costmap, cell_cost, graph, start_cell, goal, tolerance)
+        with PLAN_LOCK:
+            graph = grid_graph(cell_cost, key, in_place=True)
+            best, pred = _spread(costmap, cell_cost, graph, start_cell, goal, tolerance)
         if best is None:
             return []
         cells = path_cells(pred, best[2], size_x)

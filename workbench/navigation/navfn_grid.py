@@ -116,14 +116,15 @@ PATCH_SHARE = 0.25
 
 
 def patched_weights(
-    old_cost: np.ndarray, old_weights: np.ndarray, cell_cost: np.ndarray
+    old_cost: np.ndarray, old_weights: np.ndarray, cell_cost: np.ndarray, in_place: bool = False
 ) -> np.ndarray | None:
     """:func:`edge_weights` of ``cell_cost`` from those of ``old_cost`` (same shape), redoing
-    only the cells around the ones that changed; None when too much changed."""
+    only the cells around the ones that changed; None when too much changed. With
+    ``in_place`` the old weights are overwritten (and returned) instead of copied."""
     changed = old_cost != cell_cost
     rows = np.flatnonzero(changed.any(axis=1))
     if rows.size == 0:
-        return old_weights.copy()
+        return old_weights if in_place else old_weights.copy()
     cols = np.flatnonzero(changed.any(axis=0))
     size_y, size_x = cell_cost.shape
     # sources whose 8 slots read a changed cell lie within one cell of it; their slots
@@ -133,7 +134,7 @@ def patched_weights(
     if (y1 - y0) * (x1 - x0) > PATCH_SHARE * cell_cost.size:
         return None
     window = edge_weights(cell_cost[y0:y1, x0:x1]).reshape(y1 - y0 + 2, x1 - x0 + 2, 8)
-    weights = old_weights.copy()
+    weights = old_weights if in_place else old_weights.copy()
     full = weights.reshape(size_y + 2, size_x + 2, 8)
     # padded rows/columns of the sources redone: one cell in from the window's edge, except
     # where the window reaches the grid's edge (its padding is the grid's padding there)
@@ -145,8 +146,20 @@ def patched_weights(
     return weights
 
 
-def grid_graph(cell_cost: np.ndarray, key: Hashable | None = None) -> Any:
-    """The CSR graph of :func:`grid_edges` and :func:`edge_weights` (cached under ``key``)."""
+#: Held by a planner while it builds a graph in place and searches it (see grid_graph).
+PLAN_LOCK = threading.RLock()
+
+
+def grid_graph(
+    cell_cost: np.ndarray, key: Hashable | None = None, *, in_place: bool = False
+) -> Any:
+    """The CSR graph of :func:`grid_edges` and :func:`edge_weights` (cached under ``key``).
+
+    With ``in_place`` (callers holding :data:`PLAN_LOCK` until they are done with the
+    graph) a patched graph overwrites the last one's weights instead of copying them (a
+    400 x 400 grid's weights are 10 MB; navfn replans at 5 Hz) and the last one leaves the
+    cache.
+    """
     from scipy.sparse import csr_matrix
 
     if key is not None:
@@ -161,9 +174,14 @@ def grid_graph(cell_cost: np.ndarray, key: Hashable | None = None) -> Any:
     with _GRAPHS_LOCK:
         last = _LAST[0] if _LAST else None
     if last is not None and last[0].shape == cell_cost.shape:
-        weights = patched_weights(last[0], last[1].data, cell_cost)
+        weights = patched_weights(last[0], last[1].data, cell_cost, in_place)
     if weights is None or last is None:
         graph = csr_matrix((edge_weights(cell_cost), indices, indptr), shape=(n, n))
+    elif in_place:
+        graph = last[1]
+        with _GRAPHS_LOCK:
+            for stale in [k for k, g in _GRAPHS.items() if g is graph]:
+                del _GRAPHS[stale]
     else:  # the same structure (checked when it was built) with the new weights
         graph = copy.copy(last[1])
         graph.data = weights
@@ -241,6 +259,7 @@ __all__ = [
     "clear_graph_cache",
     "edge_weights",
     "grid_graph",
+    "PLAN_LOCK",
     "grid_edges",
     "patched_weights",
     "path_cells",
