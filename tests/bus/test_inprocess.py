@@ -302,3 +302,34 @@ def test_a_refusal_the_handler_means_is_one_line_without_traceback(capsys):
         caller.create_client("refuse", AddTwoInts).call(AddTwoInts.Request())
     assert "Traceback" not in capsys.readouterr().err
     bus.shutdown()
+
+
+def test_a_timer_tick_publishing_while_its_node_shuts_down_logs_no_error(bus, capsys):
+    bus.params.set("/use_sim_time", True)
+    clock = Node("clock", bus=bus).create_publisher("/clock", Clock)
+    node = Node("closing", bus=bus)
+    late = node.create_publisher("/late", String)
+    other = Node("other", bus=bus)
+    lost = other.create_publisher("/lost", String)
+    lost.unregister()
+    ticks = []
+
+    def closing_tick(event):
+        ticks.append("closing")
+        node.shutdown()
+        late.publish(String(data="after shutdown"))
+
+    def broken_tick(event):
+        ticks.append("other")
+        lost.publish(String(data="on an unregistered publisher"))
+
+    node.create_timer(0.5, closing_tick)
+    other.create_timer(0.5, broken_tick)
+    clock.publish(Clock(clock=Time(0.5)))
+    drain(bus)
+    assert sorted(ticks) == ["closing", "other"]
+    err = capsys.readouterr()
+    text = err.out + err.err
+    # the node that shut down ends quietly; a live node's closed publisher is still reported
+    assert "after shutdown" not in text and "/late" not in text
+    assert "timer callback raised ShutdownError" in text and "/lost" in text

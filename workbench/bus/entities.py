@@ -575,11 +575,13 @@ class Timer:
         token = current_node.set(self.node)
         try:
             self.callback(event)
+        except ShutdownError as error:
+            if not getattr(self.node, "is_shutdown", False):
+                self._report(error)
+            # else: the node is shutting down and closed a publisher the callback used
+            # while this tick ran; it was the last one
         except Exception as error:
-            self.node.get_logger().error(
-                f"timer callback raised {type(error).__name__}: {error}\n"
-                f"{traceback.format_exc().rstrip()}"
-            )
+            self._report(error)
         finally:
             current_node.reset(token)
         self._last_expected, self._last_real = expected, start
@@ -590,6 +592,12 @@ class Timer:
 
     def is_alive(self) -> bool:
         return not self.closed
+
+    def _report(self, error: Exception) -> None:
+        self.node.get_logger().error(
+            f"timer callback raised {type(error).__name__}: {error}\n"
+            f"{traceback.format_exc().rstrip()}"
+        )
 
     def shutdown(self) -> None:
         if not self.closed:
