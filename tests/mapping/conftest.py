@@ -6,6 +6,7 @@ from collections.abc import Iterator
 
 import pytest
 from gmapping_feed import STARTED
+from laser_robot import sim_time_bus
 
 from workbench.bus import Bus
 
@@ -13,10 +14,4 @@ from workbench.bus import Bus
 @pytest.fixture
 def bus() -> Iterator[Bus]:
     """An in-process bus on simulated time; the mappers started on it are closed after."""
-    bus = Bus()
-    bus.params.set("/use_sim_time", True)
-    yield bus
-    bus.shutdown()
-    for mapper in STARTED:
-        mapper.close()
-    STARTED.clear()
+    yield from sim_time_bus(STARTED)

@@ -6,32 +6,25 @@ in-process bus it publishes ``/clock``, ``/tf`` (``odom -> base_link``), ``/tf_s
 from __future__ import annotations
 
 import math
-import time
 from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
 import pytest
+from laser_robot import MOUNT, LaserRobot, sim_time_bus, wait_until
 
 from workbench.bus import Bus, Node
 from workbench.mapping.geometry import compose
 from workbench.mapping.map_server_node import LoadedMap, MapServer, load_map_yaml
 from workbench.msgs import Time
-from workbench.msgs.geometry_msgs import TransformStamped
-from workbench.msgs.rosgraph_msgs import Clock
 from workbench.msgs.sensor_msgs import LaserScan
-from workbench.msgs.tf2_msgs import TFMessage
 from workbench.navigation.amcl_laser import LaserScanData, prepare_ranges
 from workbench.navigation.amcl_map import AmclMap
-from workbench.navigation.amcl_messages import set_planar
 from workbench.navigation.amcl_node import Amcl
 from workbench.navigation.amcl_simulate import noisy_odometry, simulated_ranges
 
 REPO = Path(__file__).resolve().parents[2]
 DEMO_ROOMS = REPO / "mapping" / "demo_rooms.yaml"
-#: The laser on the robot (x, y, theta in base_link) and its height (m).
-MOUNT = np.array([0.1, 0.0, 0.0])
-MOUNT_Z = 0.2
 BEAMS, RANGE_MIN, RANGE_MAX = 360, 0.12, 3.5
 ANGLES = -math.pi + np.arange(BEAMS) * (2 * math.pi / BEAMS)
 #: A tour of the demo rooms (x, y in m) through the doorway in the dividing wall.
@@ -75,35 +68,14 @@ def scan_data(ranges: np.ndarray) -> LaserScanData:
     return LaserScanData(prepare_ranges(ranges, RANGE_MIN, RANGE_MAX), ANGLES.copy(), RANGE_MAX)
 
 
-def transform(parent: str, child: str, pose: np.ndarray, stamp: float, z: float = 0.0):
-    msg = TransformStamped()
-    msg.header.frame_id = parent
-    msg.header.stamp = Time.from_sec(stamp)
-    msg.child_frame_id = child
-    set_planar(msg.transform.translation, msg.transform.rotation, pose)
-    msg.transform.translation.z = z
-    return msg
-
-
-class Robot:
-    """Publishes what a robot driving through the map publishes, one step at a time."""
+class Robot(LaserRobot):
+    """Publishes what a robot driving through the map publishes, one step at a time; its
+    scans are ray-cast in the map with seeded noise."""
 
     def __init__(self, bus: Bus, m: AmclMap, dt: float = 0.2, seed: int = 0) -> None:
-        self.node = Node("robot", bus=bus, disable_rosout=True)
-        self.clock = self.node.create_publisher("/clock", Clock, 10)
-        self.tf = self.node.create_publisher("/tf", TFMessage, 100)
-        self.tf_static = self.node.create_publisher("/tf_static", TFMessage, 10, latch=True)
-        self.scan = self.node.create_publisher("/scan", LaserScan, 10)
-        self.map, self.dt, self.t = m, dt, 100.0
+        super().__init__(bus, dt)
+        self.map = m
         self.rng = np.random.default_rng(seed)
-
-    def mount(self, frame: str = "laser") -> None:
-        self.tf_static.publish(
-            TFMessage(transforms=[transform("base_link", frame, MOUNT, 0.0, MOUNT_Z)])
-        )
-
-    def tick(self, stamp: float) -> None:
-        self.clock.publish(Clock(clock=Time.from_sec(stamp)))
 
     def scan_msg(self, truth: np.ndarray, stamp: float, frame: str = "laser") -> LaserScan:
         msg = LaserScan()
@@ -114,25 +86,6 @@ class Robot:
         msg.range_min, msg.range_max = RANGE_MIN, RANGE_MAX
         msg.ranges = scan_ranges(self.map, truth, self.rng).astype(np.float32)
         return msg
-
-    def step(self, truth: np.ndarray, odom: np.ndarray, scan: LaserScan | None = None) -> float:
-        """Advance the clock by ``dt``, publish ``odom -> base_link`` and a scan; the stamp."""
-        self.t += self.dt
-        self.tick(self.t)
-        self.tf.publish(TFMessage(transforms=[transform("odom", "base_link", odom, self.t)]))
-        msg = scan if scan is not None else self.scan_msg(truth, self.t)
-        msg.header.stamp = Time.from_sec(self.t)
-        self.scan.publish(msg)
-        return self.t
-
-
-def wait_until(predicate, timeout: float = 20.0) -> bool:
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if predicate():
-            return True
-        time.sleep(0.005)
-    return bool(predicate())
 
 
 def pose_of(t) -> np.ndarray:
@@ -148,13 +101,7 @@ STARTED: list[Amcl] = []
 @pytest.fixture
 def bus() -> Iterator[Bus]:
     """An in-process bus on simulated time; the amcl nodes started on it are closed after."""
-    bus = Bus()
-    bus.params.set("/use_sim_time", True)
-    yield bus
-    bus.shutdown()
-    for amcl in STARTED:
-        amcl.close()
-    STARTED.clear()
+    yield from sim_time_bus(STARTED)
 
 
 def start(bus: Bus, params: dict | None = None) -> Amcl:
@@ -193,4 +140,4 @@ def initial_guess(truth: np.ndarray, offset=(0.5, -0.4, 0.25)) -> dict:
     }
 
 
-__all__ = ["noisy_odometry"]  # re-exported for the tests
+__all__ = ["noisy_odometry", "wait_until"]  # re-exported for the tests
