@@ -8,11 +8,11 @@ laser``) and ``/scan`` one step at a time; a subclass says how its scans are ray
 from __future__ import annotations
 
 import math
-import time
 from collections.abc import Callable, Iterator
 from typing import Any
 
 import numpy as np
+from process_helpers import wait_for
 
 from workbench.bus import Bus, Node
 from workbench.msgs import Time
@@ -75,12 +75,8 @@ class LaserRobot:
 
 
 def wait_until(predicate: Callable[[], Any], timeout: float = 20.0) -> bool:
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if predicate():
-            return True
-        time.sleep(0.005)
-    return bool(predicate())
+    """:func:`process_helpers.wait_for` polling every 5 ms (a stepped bus answers at once)."""
+    return wait_for(predicate, timeout, poll=0.005)
 
 
 def sim_time_bus(started: list[Any]) -> Iterator[Bus]:

@@ -36,13 +36,14 @@ def wait_port(port: int, timeout: float = 20.0) -> bool:
     return False
 
 
-def wait_for(predicate, timeout: float = 15.0) -> bool:
-    """Poll ``predicate`` until it holds or ``timeout`` seconds pass; its last value."""
+def wait_for(predicate, timeout: float = 15.0, poll: float = 0.05) -> bool:
+    """Poll ``predicate`` every ``poll`` s until it holds or ``timeout`` seconds pass; its
+    last value."""
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
         if predicate():
             return True
-        time.sleep(0.05)
+        time.sleep(poll)
     return bool(predicate())
 
 
