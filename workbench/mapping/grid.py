@@ -227,22 +227,24 @@ class OccupancyGrid:
         r = ranges[ok]
         ends_hit = hit[ok]
         direction = angles[ok] + pose[2]
-        ends = np.stack([pose[0] + r * np.cos(direction), pose[1] + r * np.sin(direction)], 1)
+        reach_x, reach_y = r * np.cos(direction), r * np.sin(direction)
         # Sample each beam every half cell from the sensor up to (not including) its end.
         steps = np.maximum(np.ceil(r / (0.5 * self.resolution)).astype(np.int64), 1)
         beam = np.repeat(np.arange(len(r)), steps)
-        k = np.arange(steps.sum()) - np.repeat(np.cumsum(steps) - steps, steps)
-        t = k / steps[beam]
-        samples = pose[:2] + (ends[beam] - pose[:2]) * t[:, None]
-        free = self._flat_index(samples)
-        hits = self._flat_index(ends[ends_hit])
-        free = np.setdiff1d(free, hits)
-        hits = np.unique(hits)
+        t = np.arange(beam.size) - np.repeat(np.cumsum(steps) - steps, steps)
+        t = t * (1.0 / steps)[beam]
+        free = self._flat_index(pose[0] + reach_x[beam] * t, pose[1] + reach_y[beam] * t)
+        hits = self._flat_index(pose[0] + reach_x[ends_hit], pose[1] + reach_y[ends_hit])
         flat_lo = self.log_odds.reshape(-1)
         flat_obs = self.observed.reshape(-1)
+        is_hit = np.zeros(flat_lo.size, dtype=bool)
+        is_hit[hits] = True
+        free = free[~is_hit[free]]
+        # A cell listed twice changes once: fancy-indexed ``+=`` writes each cell once.
         flat_lo[free] += self.miss
         flat_lo[hits] += self.hit
-        np.clip(flat_lo, -self.clamp, self.clamp, out=flat_lo)
+        for touched in (free, hits):
+            flat_lo[touched] = np.clip(flat_lo[touched], -self.clamp, self.clamp)
         flat_obs[free] = True
         flat_obs[hits] = True
 
@@ -283,10 +285,17 @@ class OccupancyGrid:
         self.origin = self.origin - np.array([grow_lo[0] * res, grow_lo[1] * res, 0.0])
         return True
 
-    def _flat_index(self, points: np.ndarray) -> np.ndarray:
-        ix, iy = _cells(points, self.resolution, self.origin)
+    def _flat_index(self, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
+        """Flat cell index ``row * width + column`` of each world point inside the grid."""
+        if self.origin[2] == 0.0:
+            u = (xs - self.origin[0]) / self.resolution
+            v = (ys - self.origin[1]) / self.resolution
+            inside = (u >= 0) & (u < self.width) & (v >= 0) & (v < self.height)
+            # Non-negative: truncation is the floor.
+            return v[inside].astype(np.int64) * self.width + u[inside].astype(np.int64)
+        ix, iy = _cells(np.stack([xs, ys], axis=1), self.resolution, self.origin)
         inside = (ix >= 0) & (ix < self.width) & (iy >= 0) & (iy < self.height)
-        return np.unique(iy[inside] * self.width + ix[inside])
+        return iy[inside] * self.width + ix[inside]
 
     def probabilities(self) -> np.ndarray:
         """Occupancy probability per cell, ``(height, width)``; 0.5 where never observed."""

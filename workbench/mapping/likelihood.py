@@ -96,7 +96,7 @@ class LikelihoodField:
         if self._tree is None:
             from scipy.spatial import cKDTree
 
-            self._tree = cKDTree(self.points)
+            self._tree = cKDTree(self.points, balanced_tree=False)  # builds faster, same answers
         return self._tree
 
     @staticmethod
@@ -126,21 +126,30 @@ class LikelihoodField:
 
     def interpolate(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Bilinear likelihood at world points ``(N, 2)`` and its gradient ``(N, 2)`` (per metre)."""
-        u, v = self.cells(points)
-        u = u - 0.5  # cell centres sit at half-integers
-        v = v - 0.5
+        value, du, dv = self.interpolate_xy(points[:, 0], points[:, 1])
+        return value, np.stack([du, dv], axis=1)
+
+    def interpolate_xy(
+        self, x: np.ndarray, y: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Bilinear likelihood at world points ``(x, y)`` and its gradient along x and y (per
+        metre), as three arrays (the matcher's inner loop calls it thousands of times)."""
         rows, cols = self.shape
-        u0 = np.clip(np.floor(u).astype(np.int64), 0, cols - 2)
-        v0 = np.clip(np.floor(v).astype(np.int64), 0, rows - 2)
-        fu = np.clip(u - u0, 0.0, 1.0)
-        fv = np.clip(v - v0, 0.0, 1.0)
-        f = self.fine
-        a, b = f[v0, u0], f[v0, u0 + 1]
-        c, d = f[v0 + 1, u0], f[v0 + 1, u0 + 1]
-        value = (1 - fv) * ((1 - fu) * a + fu * b) + fv * ((1 - fu) * c + fu * d)
-        du = (1 - fv) * (b - a) + fv * (d - c)
-        dv = (1 - fu) * (c - a) + fu * (d - b)
-        return value, np.stack([du, dv], axis=1) / self.resolution
+        u = (x - self.origin[0]) / self.resolution - 0.5  # cell centres sit at half-integers
+        v = (y - self.origin[1]) / self.resolution - 0.5
+        u0 = np.minimum(np.maximum(np.floor(u), 0.0), cols - 2)
+        v0 = np.minimum(np.maximum(np.floor(v), 0.0), rows - 2)
+        fu = np.minimum(np.maximum(u - u0, 0.0), 1.0)
+        fv = np.minimum(np.maximum(v - v0, 0.0), 1.0)
+        corner = (v0 * cols + u0).astype(np.int64)
+        f = self.fine.reshape(-1)
+        a, b = f[corner], f[corner + 1]
+        c, d = f[corner + cols], f[corner + cols + 1]
+        gu, gv = 1.0 - fu, 1.0 - fv
+        value = gv * (gu * a + fu * b) + fv * (gu * c + fu * d)
+        du = (gv * (b - a) + fv * (d - c)) / self.resolution
+        dv = (gu * (c - a) + fu * (d - b)) / self.resolution
+        return value, du, dv
 
 
 def _block_max(image: np.ndarray, factor: int) -> np.ndarray:

@@ -110,22 +110,23 @@ def match_scan(
     bu, bv = bu.reshape(-1), bv.reshape(-1)
     # Pad the fields with zeros so that no index needs clipping: points whose cell lies
     # outside the field are parked in the middle of the padding, where every offset reads 0.
+    # The padded fields are read through flat indices (row * width + column).
     reach = int(max(abs(starts[0]), abs(starts[-1]) + f)) + 1
     pad = 2 * reach
-    fine = np.pad(field.fine, pad)
-    coarse_field = np.pad(field.coarse, pad)
+    width = cols + 2 * pad
+    fine = np.pad(field.fine, pad).reshape(-1)
+    coarse_field = np.pad(field.coarse, pad).reshape(-1)
     outside = (iu < 0) | (iu >= cols) | (iv < 0) | (iv >= rows)
-    iu = np.where(outside, reach, iu + pad)
-    iv = np.where(outside, reach, iv + pad)
-    uu = iu[:, :, None] + bu[None, None, :]
-    vv = iv[:, :, None] + bv[None, None, :]
+    cell = np.where(outside, reach * width + reach, (iv + pad) * width + (iu + pad))  # (K, N)
     near_u = np.where((bu <= 0) & (bu + f - 1 >= 0), 0, np.minimum(abs(bu), abs(bu + f - 1)))
     near_v = np.where((bv <= 0) & (bv + f - 1 >= 0), 0, np.minimum(abs(bv), abs(bv + f - 1)))
-    coarse = coarse_field[vv, uu].sum(axis=1) / n  # (K, B)
+    block = bv * width + bu  # (B,)
+    coarse = coarse_field[cell[:, None, :] + block[None, :, None]].sum(axis=2) / n  # (K, B)
     coarse -= ang_pen[:, None] + lin_w * (near_u**2 + near_v**2)[None, :]
     order = np.argsort(coarse, axis=None)[::-1]
     fine_du, fine_dv = np.meshgrid(np.arange(f), np.arange(f), indexing="ij")
     fine_du, fine_dv = fine_du.reshape(-1), fine_dv.reshape(-1)
+    fine_step = fine_dv * width + fine_du
     best = (-np.inf, 0, 0, 0)
     expanded = 0
     flat_coarse = coarse.reshape(-1)
@@ -136,7 +137,7 @@ def match_scan(
         k, b = divmod(int(index), n_b)
         du = bu[b] + fine_du
         dv = bv[b] + fine_dv
-        scores = fine[iv[k][:, None] + dv[None, :], iu[k][:, None] + du[None, :]].sum(0) / n
+        scores = fine[cell[k][None, :] + (block[b] + fine_step)[:, None]].sum(axis=1) / n
         scores -= ang_pen[k] + lin_w * (du**2 + dv**2)
         j = int(np.argmax(scores))
         expanded += 1
@@ -230,12 +231,14 @@ def refine_pose(
     """
     start = np.asarray(pose, dtype=float)
 
+    sx, sy = np.ascontiguousarray(points[:, 0]), np.ascontiguousarray(points[:, 1])
+
     def evaluate(x: np.ndarray):
         c, s = np.cos(x[2]), np.sin(x[2])
-        px = c * points[:, 0] - s * points[:, 1]
-        py = s * points[:, 0] + c * points[:, 1]
-        value, grad = field.interpolate(np.stack([px + x[0], py + x[1]], axis=1))
-        return value, grad, px, py
+        px = c * sx - s * sy
+        py = s * sx + c * sy
+        value, gx, gy = field.interpolate_xy(px + x[0], py + x[1])
+        return value, (gx, gy), px, py
 
     x = start.copy()
     value, grad, px, py = evaluate(x)
@@ -243,9 +246,9 @@ def refine_pose(
     for _ in range(iterations):
         residual = 1.0 - value
         jac = np.empty((len(points), 3))
-        jac[:, 0] = -grad[:, 0]
-        jac[:, 1] = -grad[:, 1]
-        jac[:, 2] = -(grad[:, 0] * -py + grad[:, 1] * px)
+        jac[:, 0] = -grad[0]
+        jac[:, 1] = -grad[1]
+        jac[:, 2] = -(grad[0] * -py + grad[1] * px)
         h = jac.T @ jac
         h += np.diag(np.maximum(np.diag(h), 1e-6)) * 1e-3
         try:

@@ -65,21 +65,18 @@ def score_surface_covariance(
     rows, cols = field.shape
     iu = np.floor(u).astype(np.int64)
     iv = np.floor(v).astype(np.int64)
-    # Log-likelihood table over the padded field (indices outside it are clipped onto
-    # its zero border).
-    table = np.log(np.pad(field.fine, k + 1).astype(float) + floor)
-    iu = np.clip(iu + k + 1, 0, cols + 2 * k + 1)
-    iv = np.clip(iv + k + 1, 0, rows + 2 * k + 1)
+    # Log-likelihood table over the field padded by more than the window: a point beyond
+    # the field is clamped into the padding, where every offset reads the floor.
+    pad = 2 * k + 1
+    table = np.log(np.pad(field.fine, pad) + np.float32(floor))  # float32: half the reads
+    width = table.shape[1]
+    iu = np.clip(iu + pad, k, width - 1 - k)
+    iv = np.clip(iv + pad, k, table.shape[0] - 1 - k)
+    cell = (iv * width + iu)[:, None, :]  # (angles, 1, points)
     grid_u, grid_v = np.meshgrid(offsets, offsets, indexing="ij")
     du, dv = grid_u.reshape(-1), grid_v.reshape(-1)
     # (angles, offsets): summed log-likelihood of the points at each lattice pose.
-    lik = np.empty((len(dthetas), len(du)))
-    lo_u, hi_u = 0, table.shape[1] - 1
-    lo_v, hi_v = 0, table.shape[0] - 1
-    for a in range(len(dthetas)):
-        uu = np.clip(iu[a][:, None] + du[None, :], lo_u, hi_u)
-        vv = np.clip(iv[a][:, None] + dv[None, :], lo_v, hi_v)
-        lik[a] = table[vv, uu].sum(axis=0)
+    lik = table.reshape(-1)[cell + (dv * width + du)[None, :, None]].sum(axis=2, dtype=float)
     lik /= points_per_measurement
     weight = np.exp(lik - lik.max())
     weight /= weight.sum()
