@@ -131,11 +131,15 @@ def test_a_fast_laser_is_kept_up_with_by_dropping_scans(bus):
     scans = [feeder.scan_msg(pose, 0.0) for pose in truth]
     _skip_start(feeder, truth[0])
     begin = time.monotonic()
+    queued = []
     for k, pose in enumerate(truth[:120]):
         feeder.step(pose, pose, scans[k])
+        queued.append(mapper.waiting)
         time.sleep(max(0.0, begin + 0.025 * (k + 1) - time.monotonic()))
     assert wait_until(lambda: mapper.processed + mapper.dropped == 120, 5.0)
     assert mapper.processed > 10
+    # While it was busy the newest scan waited in the slot; now none does.
+    assert any(queued) and not mapper.waiting
     # It finished the scans in hand within a scan period or two of the last one.
     assert time.monotonic() - begin < 3.0 + 1.0
 

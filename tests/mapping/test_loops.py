@@ -101,3 +101,43 @@ def test_relative_covariance_of_a_chain_is_the_sum_of_its_edges():
     cov = graph.relative_covariance(1, 3)
     assert cov[0, 0] == pytest.approx(2 * sigma[0] ** 2, rel=1e-6)
     assert cov[1, 1] == pytest.approx(2 * sigma[1] ** 2 + sigma[2] ** 2, rel=1e-6)
+
+
+def _closure_seen_off(shift: float):  # type: ignore[no-untyped-def]
+    """A drift-free out-and-back graph and a loop-closure match of node 95 against node 5
+    (the same place) that sees it ``shift`` m along x off the estimate."""
+    _, graph = _out_and_back(scale=0.0)
+    node, candidate = 95, 5
+    seen = compose(graph.nodes[node], np.array([shift, 0.0, 0.0]))
+    match = match_scan(*_room(seen), graph.nodes[node], covariance=True)
+    return graph, candidate, node, match
+
+
+def test_a_closure_the_estimate_explains_is_added_without_optimising():
+    # 5 mm off: well inside the match's own uncertainty.
+    graph, candidate, node, match = _closure_seen_off(0.005)
+    before = graph.nodes.copy()
+    edges = len(graph.edges)
+    config = SlamConfig(loop_defer_chi2=1.0)
+    outcome = check_and_add(graph, candidate, node, match, config)
+    assert outcome.accepted and not outcome.optimized
+    assert 0.0 < outcome.mahalanobis2 < 1.0
+    assert len(graph.edges) == edges + 1 and graph.edges[-1].loop
+    np.testing.assert_array_equal(graph.nodes, before)  # nothing moved: not optimised
+    assert graph.chi2()[-1] == pytest.approx(outcome.mahalanobis2)  # check 4 holds as is
+
+    # Once the deferred closures add up past the limit the graph is optimised.
+    graph.edges.pop()
+    deferred = 1.0 - 0.5 * outcome.mahalanobis2
+    outcome = check_and_add(graph, candidate, node, match, config, deferred=deferred)
+    assert outcome.accepted and outcome.optimized
+
+
+def test_a_closure_that_moves_the_estimate_is_optimised_at_once():
+    # 6 cm off a drift-free graph: plausible (the gate passes) but not explained as it stands.
+    graph, candidate, node, match = _closure_seen_off(0.06)
+    before = graph.nodes.copy()
+    outcome = check_and_add(graph, candidate, node, match, SlamConfig(loop_defer_chi2=1.0))
+    assert outcome.accepted and outcome.optimized
+    assert outcome.mahalanobis2 > 1.0
+    assert np.abs(graph.nodes - before).max() > 0.01

@@ -39,6 +39,12 @@ class SlamConfig:
         loop_every: Loop closure is tried on every this many keyframes.
         loop_max_chi2: A closure whose whitened squared error after optimisation exceeds
             this is rejected as a false match.
+        loop_defer_chi2: A closure the current estimate already explains (its squared
+            Mahalanobis distance under the match's own covariance at most this) is added
+            without optimising the graph, until those added since the last optimisation
+            sum past this; 0 optimises after every closure. A live robot revisits known
+            places every few keyframes, and most closures then agree to a fraction of a
+            std dev: optimising the whole graph for each moved nothing.
         loop_max_sigma: A loop-closure match must be at least this well determined:
             largest std dev of its position (m) and of its heading (rad), from the score
             surface. A match in a corridor knows nothing along it: it would only repeat
@@ -64,6 +70,12 @@ class SlamConfig:
             odometry between two scans is good to millimetres while a match along a wall
             can slide by centimetres; logs whose odometry has a scale bias map better
             without (only unconstrained directions then take the odometry).
+        odometry_window: Size the front end's search window from ``odometry_noise``: three
+            std devs of the motion since the last processed scan, at least
+            ``min_window`` and at most ``linear_window`` / ``angular_window`` (a live
+            robot's scans come a fraction of a second apart; a log's odometry may be
+            noisier than the model says, so logs search the whole window).
+        min_window: Smallest half-widths ``(m, rad)`` of that odometry-sized window.
         odometry_noise: Std devs of odometry ``(m per m, m per rad, rad per m, rad per
             rad)`` (as GMapping's ``srr srt str stt``).
         surface_bridge: Gaps up to this long between collinear scan points are filled in
@@ -105,6 +117,7 @@ class SlamConfig:
     loop_chain: int = 5
     loop_every: int = 2
     loop_max_chi2: float = 9.0
+    loop_defer_chi2: float = 0.0
     loop_max_sigma: tuple[float, float] = (0.1, float(np.radians(1.5)))
     loop_gate: float = 16.27
     sequential_sigma: tuple[float, float, float] = (0.02, 0.02, float(np.radians(0.5)))
@@ -114,6 +127,8 @@ class SlamConfig:
     weigh_odometry: bool = False
     covariance_floor: tuple[float, float, float] = (0.01, 0.01, float(np.radians(0.2)))
     points_per_measurement: float = 4.0
+    odometry_window: bool = False
+    min_window: tuple[float, float] = (0.15, float(np.radians(5.0)))
     odometry_noise: tuple[float, float, float, float] = (0.1, 0.05, 0.02, 0.1)
     surface_bridge: float = 3.0
     linear_update: float = 0.0

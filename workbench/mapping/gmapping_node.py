@@ -165,6 +165,12 @@ class SlamGMapping:
         msg.transform.rotation.w = float(np.cos(theta / 2.0))
         self.broadcaster.send_transform(msg)
 
+    @property
+    def waiting(self) -> bool:
+        """Whether a scan waits in the slot for the worker (a newer one would replace it)."""
+        with self._cond:
+            return self._pending is not None
+
     def map_to_odom(self) -> np.ndarray:
         """The current ``map -> odom`` transform ``(x, y, theta)``."""
         with self._cond:

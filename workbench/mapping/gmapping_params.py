@@ -105,6 +105,11 @@ class GmappingParams:
             # Live: odometry from the robot's encoders at every scan, as GMapping's motion
             # model uses it.
             weigh_odometry=True,
+            # Scans a fraction of a second apart: search as far as the odometry can be off.
+            odometry_window=True,
+            # A robot wandering a house closes a loop every few keyframes.
+            loop_defer_chi2=1.0,
+            loop_every=4,
             # The estimator's own grid starts no larger than a scan's reach and grows; the
             # published map is padded to the initial bounds.
             map_size=min(max(self.xmax - self.xmin, self.ymax - self.ymin), 2 * max_urange + 2),

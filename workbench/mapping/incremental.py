@@ -90,6 +90,26 @@ def fuse_with_odometry(
     return out
 
 
+def front_window(config: SlamConfig, delta: np.ndarray) -> tuple[float, float, tuple[float, float]]:
+    """Half-widths ``(m, rad)`` of the front end's search and the std devs ``(m, rad)`` of
+    its odometry prior, after the odometry moved ``delta`` since the last processed scan.
+
+    With ``odometry_window`` the window is three std devs of ``odometry_noise`` over
+    ``delta`` (between ``min_window`` and the configured window) and the prior is a third
+    of it; otherwise the configured window and ``prior_sigma``.
+    """
+    if not config.odometry_window:
+        return config.linear_window, config.angular_window, config.prior_sigma
+    cov = odometry_covariance(delta, config.odometry_noise)
+    widest = (config.linear_window, config.angular_window)
+    spread = (np.sqrt(cov[0, 0] + cov[1, 1]), np.sqrt(cov[2, 2]))
+    linear, angular = (
+        float(np.clip(3.0 * spread[axis], min(config.min_window[axis], widest[axis]), widest[axis]))
+        for axis in (0, 1)
+    )
+    return linear, angular, (linear / 3.0, angular / 3.0)
+
+
 class Slam:
     """Graph SLAM fed one scan at a time.
 
@@ -111,6 +131,7 @@ class Slam:
         self._last: tuple[int, np.ndarray, np.ndarray, float] | None = None  # processed
         self._latest_odom: np.ndarray | None = None
         self._version = 0  # bumped when optimisation moves nodes
+        self._deferred = 0.0  # summed distances of closures added since the last optimisation
         self._fields: dict[tuple, LikelihoodField] = {}
         self._grid: OccupancyGrid | None = None
         self._grid_nodes = 0
@@ -182,6 +203,7 @@ class Slam:
         """Optimise the whole graph (at the end of a log, or now and then)."""
         self.graph.optimize(iterations=iterations)
         self._version += 1
+        self._deferred = 0.0
 
     def map(self, resolution: float | None = None) -> OccupancyGrid:
         """The occupancy grid of the keyframes at their current poses.
@@ -325,14 +347,11 @@ class Slam:
             result.covariance = cov + np.diag(np.square(cfg.covariance_floor))
         return result
 
-    def _at_edge(self, pose: np.ndarray, guess: np.ndarray) -> bool:
+    def _at_edge(self, pose: np.ndarray, guess: np.ndarray, linear: float, angular: float) -> bool:
         cfg = self.config
         shift = np.abs(pose[:2] - guess[:2]).max()
         turn = abs(float(wrap_angle(pose[2] - guess[2])))
-        return bool(
-            shift >= cfg.linear_window - cfg.match_resolution
-            or turn >= cfg.angular_window - cfg.angular_step
-        )
+        return bool(shift >= linear - cfg.match_resolution or turn >= angular - cfg.angular_step)
 
     def _process(
         self,
@@ -348,9 +367,11 @@ class Slam:
         last = len(self._frames) - 1
         nodes = range(max(0, last - cfg.local_map_keyframes + 1), last + 1)
         args = (nodes, guess, points)
-        result = self._match(*args, cfg.linear_window, cfg.angular_window, cfg.prior_sigma, True)
+        linear, angular, prior = front_window(cfg, delta)
+        result = self._match(*args, linear, angular, prior, True)
         if result is not None and (
-            result.score < cfg.retry_score or self._at_edge(result.grid_pose, guess)
+            result.score < cfg.retry_score
+            or self._at_edge(result.grid_pose, guess, linear, angular)
         ):
             # A poor fit, or a best pose on the edge of the window, usually means the odometry
             # is off by more than the window: search a wider window and keep whichever
@@ -387,12 +408,16 @@ class Slam:
         )
         self._anchor.append(node)
         self._offset.append(np.zeros(3))
-        outcome = close_loop(self.graph, node, self._loop_match, cfg)
+        outcome = close_loop(self.graph, node, self._loop_match, cfg, self._deferred)
         if outcome.reason != "no candidate":
             self.loop_attempts.append(outcome)
+        if outcome.optimized:
+            self._deferred = 0.0
+            self._version += 1
         if outcome.accepted:
             self.loop_closures.append((outcome.candidate, node))
-            self._version += 1
+            if not outcome.optimized:
+                self._deferred += outcome.mahalanobis2
             pose = self.graph.nodes[node].copy()
         return pose
 

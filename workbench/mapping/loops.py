@@ -16,6 +16,10 @@ order:
    graph's marginal covariance of the pair, not against the estimate alone);
 4. ``chi2``: after adding the edge and optimising, the closure is explained.
 
+With ``loop_defer_chi2`` a closure the estimate already explains is added without
+optimising (check 4 then holds as it stands: the edge's squared error is the distance
+measured in check 3); the graph is optimised once such closures add up past it.
+
 A match that the current estimate already explains under the gate against the match's
 covariance alone passes without the graph's marginal covariance (adding a covariance only
 shrinks the Mahalanobis distance); a live map revisits known places every few keyframes,
@@ -51,6 +55,7 @@ class LoopOutcome:
         match: The match (None when none was made).
         mahalanobis2: Squared Mahalanobis distance of the match from the estimate (an
             upper bound, against the match's covariance alone, when that settled it).
+        optimized: Whether the graph was optimised (the nodes may have moved).
     """
 
     accepted: bool
@@ -58,6 +63,7 @@ class LoopOutcome:
     candidate: int = -1
     match: MatchResult | None = None
     mahalanobis2: float = float("nan")
+    optimized: bool = False
 
 
 def information(covariance: np.ndarray) -> np.ndarray:
@@ -73,9 +79,12 @@ def check_and_add(
     node: int,
     match: MatchResult,
     config: SlamConfig,
+    deferred: float = 0.0,
 ) -> LoopOutcome:
     """Checks 1-4 of a loop-closure match of ``node`` against ``candidate``; adds the edge if
-    they pass (the graph is then optimised) and leaves the graph as it was if not."""
+    they pass and leaves the graph as it was if not. The graph is optimised unless the
+    closure's distance plus ``deferred`` (those of closures added since the last
+    optimisation) stays within ``loop_defer_chi2``."""
     if match.score < config.loop_min_score:
         return LoopOutcome(False, "score", candidate, match)
     z = between(graph.nodes[candidate], match.pose)
@@ -89,11 +98,6 @@ def check_and_add(
         measured = to_frame(match.covariance, float(match.pose[2]))
         error = _errors(graph.nodes, np.array([candidate]), np.array([node]), z[None])[0]
         d2 = float(error @ information(measured) @ error)
-        if d2 > config.loop_gate:
-            predicted = graph.relative_covariance(candidate, node, z)
-            d2 = float(error @ information(predicted + measured) @ error)
-        if d2 > config.loop_gate:
-            return LoopOutcome(False, "gate", candidate, match, d2)
         edge = Edge(
             candidate,
             node,
@@ -102,14 +106,22 @@ def check_and_add(
             loop=True,
             information=information(measured),
         )
+        if d2 + deferred <= config.loop_defer_chi2:
+            graph.add_edge(edge)
+            return LoopOutcome(True, "accepted", candidate, match, d2)
+        if d2 > config.loop_gate:
+            predicted = graph.relative_covariance(candidate, node, z)
+            d2 = float(error @ information(predicted + measured) @ error)
+        if d2 > config.loop_gate:
+            return LoopOutcome(False, "gate", candidate, match, d2)
     before = graph.nodes.copy()
     graph.add_edge(edge)
     graph.optimize()
     if graph.chi2()[-1] > config.loop_max_chi2:
         graph.edges.pop()
         graph.nodes = before
-        return LoopOutcome(False, "chi2", candidate, match, d2)
-    return LoopOutcome(True, "accepted", candidate, match, d2)
+        return LoopOutcome(False, "chi2", candidate, match, d2, optimized=True)
+    return LoopOutcome(True, "accepted", candidate, match, d2, optimized=True)
 
 
 def search_window(
@@ -125,8 +137,11 @@ def search_window(
     )
 
 
-def close_loop(graph: PoseGraph, node: int, match: Matcher, config: SlamConfig) -> LoopOutcome:
-    """Try to close a loop from ``node`` to the nearest old enough keyframe."""
+def close_loop(
+    graph: PoseGraph, node: int, match: Matcher, config: SlamConfig, deferred: float = 0.0
+) -> LoopOutcome:
+    """Try to close a loop from ``node`` to the nearest old enough keyframe (``deferred``: see
+    :func:`check_and_add`)."""
     newest = node - config.loop_min_separation
     if newest < 0 or node % config.loop_every:
         return LoopOutcome(False, "no candidate")
@@ -148,4 +163,4 @@ def close_loop(graph: PoseGraph, node: int, match: Matcher, config: SlamConfig) 
         result = match(chain, here, linear, angular)
     if result is None:
         return LoopOutcome(False, "score", best)
-    return check_and_add(graph, best, node, result, config)
+    return check_and_add(graph, best, node, result, config, deferred)
