@@ -1,13 +1,14 @@
 """Live SLAM in the house as a student runs it: simulator and slam_gmapping in their own processes.
 
-``benchmarks/slam_live.py`` steps the simulator and SLAM in turn in one process, which
-measures accuracy reproducibly but lets them use one core between them. Here every
-node runs in its own process on one core (``workbench core``, one launch file):
-``gzserver house --fast --headless``, the TurtleBot3 burger with encoder odometry
-(``--odometry world``: the shipped URDF's true pose), robot_state_publisher,
-slam_gmapping with turtlebot3_slam's parameters and turtlebot3_drive's wandering. The
-simulator runs as fast as it goes; slam_gmapping keeps up or drops scans, as the real one
-does. The script joins the bus and, every simulated second, asks Gazebo for the robot's
+``benchmarks/slam_live.py`` runs the simulator and SLAM as two threads of one process,
+never letting SLAM drop a scan, which measures accuracy reproducibly. Here every node
+runs in its own process (``workbench core``, one launch file): ``gzserver house --fast
+--headless``, the TurtleBot3 burger with encoder odometry (``--odometry world``: the
+shipped URDF's true pose), robot_state_publisher and slam_gmapping with turtlebot3_slam's
+parameters; once slam_gmapping has published its first map (the robot standing still
+until then, so the map frame starts at the true pose, as a student starts driving once
+the map shows) turtlebot3_drive starts wandering. The simulator runs as fast as it goes;
+slam_gmapping keeps up or drops scans, as the real one does. The script joins the bus and, every simulated second, asks Gazebo for the robot's
 true pose (``/gazebo/get_model_state``, stamped with the simulated time) and looks up
 ``map -> base_footprint`` and ``odom -> base_footprint`` at that stamp.
 
@@ -47,7 +48,8 @@ GMAPPING_PARAMS = "packages/turtlebot3_slam/config/gmapping_params.yaml"
 
 
 def launch_text(urdf: Path, *, slam: bool, seed: int) -> str:
-    """The launch file: simulator, robot, its state publisher, the wanderer (and SLAM)."""
+    """The launch file: simulator, robot, its state publisher (and SLAM); the wanderer is
+    started once slam_gmapping has its first map (or the first scan came, without SLAM)."""
     mapping = ""
     if slam:
         params = examples_dir() / GMAPPING_PARAMS
@@ -66,7 +68,6 @@ def launch_text(urdf: Path, *, slam: bool, seed: int) -> str:
         f' args="-urdf -model {ROBOT} -param robot_description"/>\n'
         '  <node name="robot_state_publisher" pkg="robot_state_publisher"'
         ' type="robot_state_publisher"/>\n'
-        '  <node name="turtlebot3_drive" pkg="turtlebot3_gazebo" type="turtlebot3_drive"/>\n'
         f"{mapping}"
         "</launch>\n"
     )
@@ -152,11 +153,20 @@ def run(seconds: float, *, slam: bool, encoder: bool, seed: int, folder: Path) -
             if time.monotonic() > deadline or nodes.poll() is not None:
                 raise RuntimeError(f"the launch did not start; see {log.name}")
             time.sleep(0.01)
+        # The robot stands still until slam_gmapping has its first map (a student starts
+        # driving once the map shows in RViz): the map frame starts at the true pose.
+        drive = subprocess.Popen(
+            [sys.executable, "-m", "workbench", "run", "turtlebot3_gazebo", "turtlebot3_drive"],
+            env=env,
+            stdout=log,
+            stderr=subprocess.STDOUT,
+        )
+        children.append(drive)
         begin, wall = latest["clock"], time.perf_counter()
         samples: list[tuple[float, ...]] = []
         next_sample = begin + 1.0
         while latest["clock"] - begin < seconds:
-            if nodes.poll() is not None:
+            if nodes.poll() is not None or drive.poll() is not None:
                 raise RuntimeError(f"a node stopped; see {log.name}")
             if latest["clock"] < next_sample:
                 time.sleep(0.002)
@@ -218,6 +228,8 @@ def main(argv: list[str] | None = None) -> int:
         "slam": errors(live["samples"], slice(2, 4)),
         "dead_reckoning": errors(live["samples"], slice(4, 6)),
         "map": live["map"],
+        # Per simulated second: true x y, map -> base_footprint x y, odom -> base_footprint x y.
+        "samples": live["samples"],
     }
     args.out.parent.mkdir(parents=True, exist_ok=True)
     args.out.write_text(json.dumps(result, indent=1))

@@ -14,7 +14,7 @@ from benchmark_modules import benchmark_modules
 from workbench.bus.launch import load_launch
 
 
-def test_the_launch_file_starts_the_simulator_robot_wanderer_and_slam(tmp_path: Path) -> None:
+def test_the_launch_file_starts_the_simulator_robot_and_slam(tmp_path: Path) -> None:
     with benchmark_modules("slam_live_processes") as (bench,):
         urdf = tmp_path / "robot.urdf"
         urdf.write_text(bench.encoder_urdf())
@@ -27,7 +27,6 @@ def test_the_launch_file_starts_the_simulator_robot_wanderer_and_slam(tmp_path: 
                 ("gazebo_ros", "gzserver"),
                 ("gazebo_ros", "spawn_model"),
                 ("robot_state_publisher", "robot_state_publisher"),
-                ("turtlebot3_gazebo", "turtlebot3_drive"),
             }
             if slam:
                 expected.add(("gmapping", "slam_gmapping"))
