@@ -411,12 +411,13 @@ class Slam:
         outcome = close_loop(self.graph, node, self._loop_match, cfg, self._deferred)
         if outcome.reason != "no candidate":
             self.loop_attempts.append(outcome)
-        if outcome.optimized:
-            self._deferred = 0.0
-            self._version += 1
+        # Only an accepted closure moves nodes: one refused after optimising restored them.
         if outcome.accepted:
             self.loop_closures.append((outcome.candidate, node))
-            if not outcome.optimized:
+            if outcome.optimized:
+                self._deferred = 0.0
+                self._version += 1
+            else:
                 self._deferred += outcome.mahalanobis2
             pose = self.graph.nodes[node].copy()
         return pose
