@@ -8,8 +8,9 @@ shipped URDF's true pose), robot_state_publisher and slam_gmapping with turtlebo
 parameters; once slam_gmapping has published its first map (the robot standing still
 until then, so the map frame starts at the true pose, as a student starts driving once
 the map shows) turtlebot3_drive starts wandering. The simulator runs as fast as it goes;
-slam_gmapping keeps up or drops scans, as the real one does. The script joins the bus and, every simulated second, asks Gazebo for the robot's
-true pose (``/gazebo/get_model_state``, stamped with the simulated time) and looks up
+slam_gmapping keeps up or drops scans, as the real one does. The script joins the bus
+and, every simulated second, asks Gazebo for the robot's true pose
+(``/gazebo/get_model_state``, stamped with the simulated time) and looks up
 ``map -> base_footprint`` and ``odom -> base_footprint`` at that stamp.
 
 Measured over ``--minutes`` simulated minutes (10 by default) from slam_gmapping's first

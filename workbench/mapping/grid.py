@@ -26,14 +26,14 @@ MAX_CELLS = 100_000_000
 
 
 def _cells(
-    points: np.ndarray, resolution: float, origin: np.ndarray
+    xs: np.ndarray, ys: np.ndarray, resolution: float, origin: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Cell indices ``(ix, iy)`` of world points ``(N, 2)`` for a grid with this origin."""
-    c, s = np.cos(origin[2]), np.sin(origin[2])
-    dx = points[:, 0] - origin[0]
-    dy = points[:, 1] - origin[1]
-    lx = c * dx + s * dy
-    ly = -s * dx + c * dy
+    """Cell indices ``(ix, iy)`` of world points ``(xs, ys)`` for a grid with this origin."""
+    lx = xs - origin[0]
+    ly = ys - origin[1]
+    if origin[2] != 0.0:  # only a rotated grid needs turning
+        c, s = np.cos(origin[2]), np.sin(origin[2])
+        lx, ly = c * lx + s * ly, -s * lx + c * ly
     return np.floor(lx / resolution).astype(np.int64), np.floor(ly / resolution).astype(np.int64)
 
 
@@ -92,7 +92,8 @@ class GridMap:
 
     def world_to_cell(self, points: np.ndarray) -> np.ndarray:
         """Cell indices ``(N, 2)`` as ``(ix, iy)`` of world points ``(N, 2)``; may lie outside."""
-        ix, iy = _cells(np.atleast_2d(points), self.resolution, self.origin)
+        points = np.atleast_2d(points)
+        ix, iy = _cells(points[:, 0], points[:, 1], self.resolution, self.origin)
         return np.stack([ix, iy], axis=1)
 
     def cell_to_world(self, cells: np.ndarray) -> np.ndarray:
@@ -287,13 +288,7 @@ class OccupancyGrid:
 
     def _flat_index(self, xs: np.ndarray, ys: np.ndarray) -> np.ndarray:
         """Flat cell index ``row * width + column`` of each world point inside the grid."""
-        if self.origin[2] == 0.0:
-            u = (xs - self.origin[0]) / self.resolution
-            v = (ys - self.origin[1]) / self.resolution
-            inside = (u >= 0) & (u < self.width) & (v >= 0) & (v < self.height)
-            # Non-negative: truncation is the floor.
-            return v[inside].astype(np.int64) * self.width + u[inside].astype(np.int64)
-        ix, iy = _cells(np.stack([xs, ys], axis=1), self.resolution, self.origin)
+        ix, iy = _cells(xs, ys, self.resolution, self.origin)
         inside = (ix >= 0) & (ix < self.width) & (iy >= 0) & (iy < self.height)
         return iy[inside] * self.width + ix[inside]
 

@@ -101,12 +101,11 @@ def front_window(config: SlamConfig, delta: np.ndarray) -> tuple[float, float, t
     if not config.odometry_window:
         return config.linear_window, config.angular_window, config.prior_sigma
     cov = odometry_covariance(delta, config.odometry_noise)
-    widest = (config.linear_window, config.angular_window)
-    spread = (np.sqrt(cov[0, 0] + cov[1, 1]), np.sqrt(cov[2, 2]))
-    linear, angular = (
-        float(np.clip(3.0 * spread[axis], min(config.min_window[axis], widest[axis]), widest[axis]))
-        for axis in (0, 1)
-    )
+    most_linear, most_angular = config.linear_window, config.angular_window
+    least_linear = min(config.min_window[0], most_linear)
+    least_angular = min(config.min_window[1], most_angular)
+    linear = float(np.clip(3.0 * np.sqrt(cov[0, 0] + cov[1, 1]), least_linear, most_linear))
+    angular = float(np.clip(3.0 * np.sqrt(cov[2, 2]), least_angular, most_angular))
     return linear, angular, (linear / 3.0, angular / 3.0)
 
 
