@@ -351,6 +351,7 @@ def load_yaml(
     limits: TreeLimits = YAML_LIMITS,
     error: type[WorkbenchError] = WorkbenchError,
     path: str | os.PathLike[str] | None = None,
+    loader: Any = None,
 ) -> Any:
     """``yaml.safe_load(text)`` within ``limits``: a one-line error instead of a bomb.
 
@@ -360,6 +361,7 @@ def load_yaml(
         limits: Depth, elements and bytes after alias expansion.
         error: The error class to raise.
         path: The file it came from, for messages.
+        loader: A safe loader class with extra tags (default: PyYAML's safe loader).
 
     Raises:
         error: Invalid YAML, a ``!!python`` tag, a value YAML cannot build (a
@@ -372,7 +374,7 @@ def load_yaml(
     check_yaml(text, what, limits, error, path)
     yaml = _yaml_module()
     try:
-        return yaml.load(text, Loader=_loader())  # noqa: S506 - a safe loader
+        return yaml.load(text, Loader=loader or _loader())  # noqa: S506 - a safe loader
     except yaml.YAMLError as exc:
         raise _yaml_error(exc, what, limits, error, path) from None
     except (ValueError, TypeError, OverflowError) as exc:

@@ -8,6 +8,7 @@ from fuzz_helpers import TEXT_TOKENS, Mutator, WriteWatch, bounded, check_one_li
 
 from workbench.bus.launch import LaunchError, load_launch
 from workbench.errors import WorkbenchError
+from workbench.model.launch_eval import evaluate_launch_expression
 
 RUNS = 300
 
@@ -26,6 +27,14 @@ LAUNCH_TOKENS = [
     b"include: [{}]\n",
     b"nodes: [1]\n",
     b"remap: [a]\n",
+    b'<arg name="e" default="$(eval 9 ** 9 ** 9)"/>',
+    b'<param name="v" value="$(eval [x for x in range(10**6) for y in range(10**6)])"/>',
+    b' pass_all_args="true" ',
+    b' clear_params="true" ',
+    b'<machine name="m" address="elsewhere"/>',
+    b"<rosparam>{a: !radians pi/2, b: deg(90)}</rosparam>",
+    b'<env name="E" value="$(optenv HOME)"/>',
+    b'<test test-name="t" pkg="p" type="t"/>',
 ]
 
 
@@ -53,7 +62,13 @@ def test_mutated_launch_files(tmp_path, data_dir):
         path.write_bytes(mutator.mutate(data, rounds=1 + run % 3))
         with bounded(f"launch file mutation {run}"):
             try:
-                load_launch(path, args, dry_run=run % 2 == 0, command_runner=_refuse)
+                load_launch(
+                    path,
+                    args,
+                    dry_run=run % 2 == 0,
+                    command_runner=_refuse,
+                    evaluate=evaluate_launch_expression,
+                )
                 planned += 1
             except WorkbenchError as error:
                 check_one_line(error, f"mutation {run} of {path.name}")

@@ -22,8 +22,9 @@ from pathlib import Path
 from typing import Any
 
 from workbench.bus.launch_context import Deferred, LaunchContext, LaunchError
+from workbench.bus.launch_rosparam_yaml import load_rosparam_yaml
 from workbench.errors import WorkbenchError
-from workbench.limits import MAX_TEXT_FILE_BYTES, load_yaml, load_yaml_file, read_text_bounded
+from workbench.limits import MAX_TEXT_FILE_BYTES, read_text_bounded
 
 #: Seconds a ``<param command=...>`` may run.
 COMMAND_TIMEOUT = 120.0
@@ -140,21 +141,53 @@ def textfile_value(name: str, ctx: LaunchContext, where: str, line: int | None) 
     )
 
 
-def rosparam_data(
-    file: str | None, inline: str, ctx: LaunchContext, where: str, line: int | None
-) -> Any:
-    """The YAML of a ``<rosparam>``: its ``file=`` or its text (a :class:`Deferred` for a
-    file in a dry run).
+def binfile_value(name: str, ctx: LaunchContext, where: str, line: int | None) -> Any:
+    """``binfile=``: refused outside a dry run, as workbench's parameters hold no bytes.
 
     Raises:
-        LaunchError: An unreadable file, invalid YAML or YAML past the bounds.
+        LaunchError: Always, outside a dry run.
     """
-    if file is not None:
-        return _outside_file(
-            file, ctx, where, line, lambda path: load_yaml_file(path, "rosparam file", LaunchError)
-        )
+    if ctx.shared.dry_run:
+        return Deferred("contents of binary file", str(ctx.resolve_file(name)))
+    raise ctx.error(
+        f"{where}: binfile={name} makes a binary parameter, which workbench's parameter "
+        "server does not hold",
+        line,
+        hint="use textfile= for text, or a YAML list of numbers",
+    )
+
+
+def rosparam_text(file: str, ctx: LaunchContext, where: str, line: int | None) -> Any:
+    """The text of a ``<rosparam file=...>`` (a :class:`Deferred` in a dry run).
+
+    Raises:
+        LaunchError: Not a readable regular file within the size bound.
+    """
+    return _outside_file(
+        file, ctx, where, line, lambda path: read_text_bounded(path, "rosparam file", LaunchError)
+    )
+
+
+def rosparam_data(
+    text: str, file: str | None, ctx: LaunchContext, where: str, line: int | None
+) -> Any:
+    """The YAML of a ``<rosparam>`` (its file's text, or its own), with rosparam's angle tags.
+
+    Raises:
+        LaunchError: Invalid YAML or YAML past the bounds (the line counts from the file,
+            or from the element for inline YAML).
+    """
+    what = "rosparam file" if file is not None else f"{where}: the YAML"
     try:
-        return load_yaml(inline, f"{where}: the YAML", error=LaunchError)
-    except LaunchError as error:  # its line counts from the element's
+        return load_rosparam_yaml(
+            text,
+            what,
+            LaunchError,
+            ctx.shared.evaluate,
+            str(ctx.resolve_file(file)) if file is not None else None,
+        )
+    except LaunchError as error:
+        if file is not None:
+            raise ctx.error(f"{where}: {error.one_line()}", line) from None
         at = line + error.line - 1 if line is not None and error.line is not None else line
         raise ctx.error(error.message, at, error.hint) from None

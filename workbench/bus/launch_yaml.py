@@ -75,10 +75,9 @@ def _text(value: Any, ctx: LaunchContext, where: str) -> str:
     return str(value)
 
 
-def load_yaml_launch(
-    file: Path, ctx: LaunchContext, plan: LaunchPlan, given: dict[str, str]
-) -> None:
-    """Read the YAML launch file ``file`` into ``plan``; ``given`` are its ``args`` values."""
+def load_yaml_launch(file: Path, ctx: LaunchContext, plan: LaunchPlan) -> None:
+    """Read the YAML launch file ``file`` into ``plan`` (its ``args`` values are ``ctx.args``)."""
+    given = dict(ctx.args)
     data = load_yaml_file(file, "launch file", LaunchError)
     if data is None:
         data = {}
@@ -96,7 +95,8 @@ def load_yaml_launch(
             )
         else:
             ctx.args[str(name)] = _text(default, ctx, f"args.{name}")
-    missing = sorted(set(given) - set(ctx.args))
+        ctx.declare_arg(str(name), None, None, None)
+    missing = sorted(set(given) - set(ctx.declared))
     if missing:
         raise ctx.error(f"argument '{missing[0]}' is not declared in the launch file")
 

@@ -11,6 +11,8 @@ from __future__ import annotations
 import contextlib
 import os
 import runpy
+import shlex
+import shutil
 import signal
 import subprocess
 import sys
@@ -20,7 +22,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from workbench.bus.launch import LaunchPlan, NodeSpec, find_package
+from workbench.bus.launch import LaunchError, LaunchPlan, NodeSpec, find_package
 from workbench.entry_points import call_node, find_node, unknown_node
 from workbench.errors import BusError
 
@@ -103,6 +105,64 @@ def run_script(script: Path, argv: list[str]) -> int:
 LAUNCHED_ENV = "WORKBENCH_LAUNCHED"
 
 
+def launch_prefix(spec: NodeSpec) -> list[str]:
+    """The words of a node's ``launch-prefix`` (``gdb -ex run --args``), put before its command.
+
+    Raises:
+        LaunchError: Words that cannot be split, or a program that is not installed.
+    """
+    if not spec.launch_prefix:
+        return []
+    try:
+        words = shlex.split(spec.launch_prefix)
+    except ValueError as error:
+        raise LaunchError(
+            f"node {spec.full_name}: launch-prefix {spec.launch_prefix!r} cannot be split "
+            f"({error})",
+            path=spec.source,
+        ) from None
+    if words and shutil.which(words[0]) is None:
+        raise LaunchError(
+            f"node {spec.full_name}: launch-prefix program '{words[0]}' is not installed",
+            path=spec.source,
+            hint="install it, or remove launch-prefix",
+        )
+    return words
+
+
+def working_directory(spec: NodeSpec, near: Path | None) -> Path | None:
+    """Where a node runs: ``cwd="ROS_HOME"`` in ``$ROS_HOME`` (``~/.ros``), ``cwd="node"``
+    in its script's or package's folder, else where ``workbench launch`` runs."""
+    if spec.cwd == "ROS_HOME":
+        home = Path(os.environ.get("ROS_HOME") or Path.home() / ".ros")
+        home.mkdir(parents=True, exist_ok=True)
+        return home
+    if spec.cwd == "node":
+        script = find_script(spec.pkg, spec.type, near)
+        if script is not None:
+            return script.parent
+        try:
+            return find_package(spec.pkg, near)
+        except BusError:
+            return None
+    return None
+
+
+def _dump(bus: Bus, param: str, file: Path) -> None:
+    """``<rosparam command="dump">``: the parameters under ``param`` into ``file`` as YAML."""
+    import yaml
+
+    if not bus.params.has(param):
+        print(f"rosparam dump: no parameter {param}; {file} not written", flush=True)
+        return
+    try:
+        file.write_text(yaml.safe_dump(bus.params.get(param), default_flow_style=False))
+    except OSError as error:
+        raise LaunchError(
+            f"rosparam dump of {param}: cannot write {file}: {error.strerror or error}"
+        ) from None
+
+
 @dataclass
 class _Process:
     spec: NodeSpec
@@ -145,7 +205,14 @@ class Launcher:
         self._stopping = False
 
     def start(self) -> None:
-        """Start (or find) the core, set the parameters, start every node."""
+        """Start (or find) the core, run the rosparam commands, clear and set the parameters,
+        start every node.
+
+        Raises:
+            LaunchError: A node's launch-prefix names a program that is not installed.
+        """
+        for spec in self.plan.nodes:
+            launch_prefix(spec)
         from workbench.bus.bus import Bus
         from workbench.bus.core import Core
         from workbench.bus.zconfig import parse_uri, port_open
@@ -157,9 +224,15 @@ class Launcher:
             self.core = Core(self.uri)
             print(f"started core service [{self.uri}]", flush=True)
         self.bus = bus = Bus.connect(self.uri)
-        for name in self.plan.deletes:
-            if bus.params.has(name):
-                bus.params.delete(name)
+        for command in self.plan.rosparam_commands:  # roslaunch runs these first
+            if command.command == "delete":
+                if bus.params.has(command.param):
+                    bus.params.delete(command.param)
+            elif command.file is not None:
+                _dump(bus, command.param, Path(command.file))
+        for namespace in self.plan.clear_params:
+            if bus.params.has(namespace):
+                bus.params.delete(namespace)
         for name, value in self.plan.params.items():
             bus.params.set(name, value)
         if self.plan.params:
@@ -171,11 +244,13 @@ class Launcher:
             print(
                 f"    {process.spec.full_name} ({process.spec.pkg}/{process.spec.type})", flush=True
             )
+        for test in self.plan.tests:
+            print(f"test {test.full_name} is not run (rostest runs tests)", flush=True)
         for process in self.processes:
             self._spawn(process)
 
     def _command(self, spec: NodeSpec) -> list[str]:
-        command = [sys.executable, "-m", "workbench", "run"]
+        command = launch_prefix(spec) + [sys.executable, "-m", "workbench", "run"]
         if self.near is not None:
             command += ["--near", str(self.near)]
         command += [spec.pkg, spec.type, *spec.args, f"__name:={spec.name}"]
@@ -185,15 +260,22 @@ class Launcher:
         return command
 
     def _spawn(self, process: _Process) -> None:
-        env = dict(os.environ, WORKBENCH_MASTER_URI=self.uri, PYTHONUNBUFFERED="1")
-        env[LAUNCHED_ENV] = "1"  # Ctrl-C reaches it twice (terminal and launcher): expected
         spec = process.spec
+        env = dict(os.environ, **spec.env)
+        env.update(WORKBENCH_MASTER_URI=self.uri, PYTHONUNBUFFERED="1")
+        env[LAUNCHED_ENV] = "1"  # Ctrl-C reaches it twice (terminal and launcher): expected
         if spec.output == "screen":
             stdout = stderr = None
         else:
             process.log = self.log_dir / f"{process.label}.log"
             stdout = stderr = open(process.log, "ab")  # noqa: SIM115 - handed to the child
-        process.popen = subprocess.Popen(self._command(spec), env=env, stdout=stdout, stderr=stderr)
+        process.popen = subprocess.Popen(
+            self._command(spec),
+            env=env,
+            stdout=stdout,
+            stderr=stderr,
+            cwd=working_directory(spec, self.near),
+        )
         process.starts += 1
         where = "" if process.log is None else f" (log: {process.log})"
         print(

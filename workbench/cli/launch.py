@@ -4,6 +4,10 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from workbench.bus.launch import LaunchPlan
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -18,10 +22,17 @@ def configure(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help="print the plan; start, run and read nothing but the launch files",
     )
+    parser.add_argument(
+        "--ros-args",
+        action="store_true",
+        help="list the launch file's arguments (with their doc and default) and exit",
+    )
 
 
 def run(args: argparse.Namespace) -> int:
     path, values = split_target(args.target)
+    if args.ros_args:
+        return print_args(path, values)
     return launch(path, values, uri=args.uri, dry_run=args.dry_run)
 
 
@@ -96,6 +107,78 @@ def run_command(command: str, launch_file: Path) -> str:
     return expand_xacro(source, mappings)
 
 
+def load(path: Path, values: dict[str, str], dry_run: bool) -> LaunchPlan:
+    """The plan of the launch file ``path``, with xacro and ``$(eval)`` as workbench has them.
+
+    Raises:
+        LaunchError: The file is missing or malformed.
+    """
+    from workbench.bus.launch import load_launch
+    from workbench.model.launch_eval import evaluate_launch_expression
+
+    return load_launch(
+        path,
+        dict(values),
+        dry_run=dry_run,
+        command_runner=None if dry_run else run_command,
+        evaluate=evaluate_launch_expression,
+    )
+
+
+def print_args(path: Path, values: dict[str, str]) -> int:
+    """``--ros-args``: the top-level file's arguments, required ones first (as roslaunch)."""
+    plan = load(path, values, dry_run=True)
+    free = [a for a in plan.args if not a.fixed]
+    for title, group in (
+        ("Required Arguments:", [a for a in free if a.default is None]),
+        ("Optional Arguments:", [a for a in free if a.default is not None]),
+    ):
+        if group:
+            print(title)
+            for arg in group:
+                default = "" if arg.default is None else f' (default "{arg.default}")'
+                print(f"  {arg.name}{default}: {arg.doc or 'undocumented'}")
+    return 0
+
+
+def describe_plan(plan: LaunchPlan) -> list[str]:
+    """The lines ``--dry-run`` prints: parameters, rosparam commands, nodes, tests."""
+    from workbench.bus.launch import Deferred
+
+    lines = [f"clear {namespace}/*" for namespace in plan.clear_params]
+    for command in plan.rosparam_commands:
+        target = f" {command.file}" if command.command == "dump" else ""
+        lines.append(f"rosparam {command.command}{target} {command.param} (before the params)")
+    for name, value in sorted(plan.params.items()):
+        text = repr(value)
+        if len(text) >= 60 and not isinstance(value, Deferred):
+            text = text[:57] + "..."
+        lines.append(f"param {name} = {text}")
+    for namespace, file in plan.rosparam_files:
+        lines.append(f"rosparam {namespace} <- {file} (not read in a dry run)")
+    for spec in plan.nodes:
+        extra = " ".join([*spec.args, *(f"{a}:={b}" for a, b in spec.remaps.items())])
+        lines.append(f"node {spec.full_name}: {spec.pkg}/{spec.type} {extra}".rstrip())
+        notes = [f"env {k}={v}" for k, v in spec.env.items()]
+        if spec.launch_prefix:
+            notes.append(f"launch-prefix '{spec.launch_prefix}'")
+        if spec.cwd:
+            notes.append(f"cwd {spec.cwd}")
+        if spec.required:
+            notes.append("required")
+        if spec.respawn:
+            notes.append(f"respawn after {spec.respawn_delay:g} s")
+        if spec.machine:
+            notes.append(f"machine {spec.machine} (this computer)")
+        lines += [f"    {note}" for note in notes]
+    for test in plan.tests:
+        lines.append(
+            f"test {test.full_name}: {test.pkg}/{test.type} (test-name {test.test_name}, "
+            f"time-limit {test.time_limit:g} s; listed, not run: rostest runs tests)"
+        )
+    return lines
+
+
 def launch(
     path: Path,
     values: dict[str, str] | None = None,
@@ -114,24 +197,14 @@ def launch(
     Raises:
         LaunchError: The file is missing or malformed.
     """
-    from workbench.bus.launch import load_launch
+    import sys
 
-    plan = load_launch(
-        path, dict(values or {}), dry_run=dry_run, command_runner=None if dry_run else run_command
-    )
+    plan = load(path, dict(values or {}), dry_run)
+    for warning in plan.warnings:
+        print(f"warning: {warning}", file=sys.stderr)
     if dry_run:
-        from workbench.bus.launch import Deferred
-
-        for name, value in sorted(plan.params.items()):
-            text = repr(value)
-            if len(text) >= 60 and not isinstance(value, Deferred):
-                text = text[:57] + "..."
-            print(f"param {name} = {text}")
-        for namespace, file in plan.rosparam_files:
-            print(f"rosparam {namespace} <- {file} (not read in a dry run)")
-        for spec in plan.nodes:
-            extra = " ".join([*spec.args, *(f"{a}:={b}" for a, b in spec.remaps.items())])
-            print(f"node {spec.full_name}: {spec.pkg}/{spec.type} {extra}".rstrip())
+        for line in describe_plan(plan):
+            print(line)
         return 0
     from workbench.bus.launcher import Launcher
 
