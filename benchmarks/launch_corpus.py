@@ -41,7 +41,7 @@ ROOT = Path(__file__).resolve().parent.parent
 HERE = Path(__file__).resolve().parent
 ORACLE = HERE / "roslaunch_oracle.py"
 ROS_PYTHON = "/usr/bin/python3"
-COMMAND_MARKER = "<command: %s>"
+COMMAND_MARKER = "<command: {}>"
 NODE_FIELDS = ("pkg", "type", "name", "namespace", "args", "remaps", "env", "launch_prefix")
 NODE_FIELDS += ("cwd", "machine")
 RUN_FIELDS = ("output", "respawn", "respawn_delay", "required")
@@ -100,20 +100,22 @@ def _values(argv: list[str]) -> dict[str, str]:
     return dict(a.split(":=", 1) for a in argv)
 
 
-def workbench_plan(job: dict[str, Any]) -> dict[str, Any]:
-    """workbench's plan for one job as the oracle prints it (or ``{"error": ...}``)."""
+def workbench_plan(job: dict[str, Any], dry_run: bool = False) -> dict[str, Any]:
+    """workbench's plan for one job as the oracle prints it (or ``{"error": ...}``); with
+    ``dry_run``, as ``workbench launch --dry-run`` reads it (no file but the launch files)."""
     from workbench.bus.launch import load_launch
     from workbench.errors import WorkbenchError
     from workbench.model.launch_eval import evaluate_launch_expression
 
     def marker(command: str, _file: Path) -> str:
-        return COMMAND_MARKER % command
+        return COMMAND_MARKER.format(command)
 
     with _environment(job.get("env", {})), _numbered_anon():
         try:
             plan = load_launch(
                 job["file"],
                 _values(job.get("argv", [])),
+                dry_run=dry_run,
                 command_runner=marker,
                 evaluate=evaluate_launch_expression,
             )
@@ -145,7 +147,7 @@ def plan_json(plan: Any) -> dict[str, Any]:
     return {
         "nodes": [node(spec, False) for spec in plan.nodes],
         "tests": [node(spec, True) for spec in plan.tests],
-        "params": plan.params,
+        "params": {name: _deferred(value) for name, value in plan.params.items()},
         "clear_params": list(plan.clear_params),
         "executables": [
             ["rosparam", [c.command, *([c.file] if c.command == "dump" else []), c.param]]
@@ -153,6 +155,13 @@ def plan_json(plan: Any) -> dict[str, Any]:
         ],
         "machines": dict(plan.machines),
     }
+
+
+def _deferred(value: Any) -> Any:
+    """A dry run's :class:`Deferred` value as its text (what ``--dry-run`` prints)."""
+    from workbench.bus.launch import Deferred
+
+    return repr(value) if isinstance(value, Deferred) else value
 
 
 # --- comparing ------------------------------------------------------------------------------
@@ -332,21 +341,32 @@ def main() -> int:
     rows = []
     counts: Counter[str] = Counter()
     os.chdir(root)
+    resolved = dry_same = 0
     for job, their in zip(jobs, theirs, strict=True):
-        kind, why = classify(workbench_plan(job), their)
+        ours = workbench_plan(job)
+        kind, why = classify(ours, their)
         counts[kind] += 1
+        if "error" not in ours:  # the dry run resolves it too, to the same nodes
+            resolved += 1
+            dry = workbench_plan(job, dry_run=True)
+            same = "error" not in dry and normalise(dry)["nodes"] == normalise(ours)["nodes"]
+            dry_same += same
+            if not same:
+                why = [*why, f"dry run: {dry.get('error', 'other nodes')}"]
         rows.append({"file": str(Path(job["file"]).relative_to(root)), "kind": kind, "why": why})
     width = max(len(k) for k in counts) if counts else 0
     print(f"{len(files)} launch files under {root}")
     for kind in ("agree", "differ", "roslaunch only", "ours only", "both refuse"):
         print(f"  {kind:<{width}}  {counts[kind]}")
+    print(f"workbench's dry run resolves {dry_same} of the {resolved} to the same nodes")
     for row in rows:
         if row["kind"] in ("differ", "roslaunch only") or (options.verbose and row["why"]):
             print(f"\n[{row['kind']}] {row['file']}")
             for line in row["why"]:
                 print(f"    {line}")
     out = HERE / "results" / "launch_corpus.json"
-    out.write_text(json.dumps({"root": str(root), "counts": counts, "files": rows}, indent=1))
+    summary = {"root": str(root), "counts": counts, "dry_run_same_nodes": dry_same}
+    out.write_text(json.dumps({**summary, "files": rows}, indent=1))
     return 0
 
 

@@ -245,7 +245,10 @@ class _Writer:
         lines = []
         for arg in passed:
             if not pass_all or rng.random() < 0.5:
-                lines.append(f'<arg name="{arg}" value="$(arg {arg})"/>')
+                key = "default" if rng.random() < 0.3 else "value"
+                lines.append(f'<arg name="{arg}" {key}="$(arg {arg})"{self.condition(scope)}/>')
+        if rng.random() < 0.1:  # roslaunch ignores a <remap> here (with a warning)
+            lines.append('<remap from="ignored" to="also_ignored"/>')
         if rng.random() < 0.05:  # roslaunch refuses an argument the file does not declare
             lines.append('<arg name="undeclared" value="1"/>')
         if rng.random() < 0.2:
