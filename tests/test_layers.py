@@ -36,6 +36,7 @@ LAYERS: dict[str, int] = {
     "paths": 0,
     "output_files": 0,
     "entry_points": 0,
+    "ros_packages": 0,
     "spatial": 0,
     # ROS 1 message types
     "msgs": 1,

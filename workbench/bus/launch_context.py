@@ -30,14 +30,11 @@ from workbench.bus.launch_subst import (
     resolve,
 )
 from workbench.errors import BusError
-from workbench.limits import read_text_bounded
 
 __all__ = ["Deferred", "LaunchArg", "LaunchPlan", "NodeSpec", "TestSpec"]
 
 #: Longest value after substitution (an ``<arg>`` defined twice over another doubles), chars.
 MAX_VALUE_CHARS = 1024 * 1024
-#: Largest package.xml read while looking for a package, bytes.
-PACKAGE_XML_BYTES = 1024 * 1024
 #: Deepest chain of ``<include>`` (a file including a file ...).
 MAX_INCLUDE_DEPTH = 32
 #: Most files one launch reads (a file may include the same file many times over).
@@ -77,42 +74,20 @@ class LaunchShared:
 
 
 def find_package(name: str, near: Path | None = None) -> Path:
-    """The directory of package ``name``: a folder with a package.xml naming it.
-
-    Looks beside and above ``near``, in the working directory, in the checkout and in
-    workbench's ``examples/packages``.
+    """The folder of package ``name``, looked up as :mod:`workbench.ros_packages` does:
+    ``WORKBENCH_PACKAGE_PATH`` and ``ROS_PACKAGE_PATH`` first, then the workspace around
+    ``near`` (a launch file's folder) and the working directory, then workbench's own.
 
     Raises:
         LaunchError: Not found.
     """
-    from workbench.paths import examples_dir, project_root
+    from workbench.ros_packages import PackageLookupError
+    from workbench.ros_packages import find_package as lookup
 
-    roots: list[Path] = []
-    if near is not None:
-        roots += [near, *near.parents][:4]
-    # examples/packages holds the ROS packages the labs' launch files name (gazebo_ros ...).
-    roots += [Path.cwd(), project_root(), examples_dir(), examples_dir() / "packages"]
-    seen: set[Path] = set()
-    for root in roots:
-        if root in seen or not root.is_dir():
-            continue
-        seen.add(root)
-        if root.name == name:
-            return root
-        for candidate in (root / name, root / "src" / name):
-            if candidate.is_dir():
-                return candidate
-        for xml in list(root.glob("package.xml")) + list(root.glob("*/package.xml")):
-            try:  # a FIFO or a huge file named package.xml is not a package
-                text = read_text_bounded(xml, "package.xml", LaunchError, PACKAGE_XML_BYTES)
-            except LaunchError:
-                continue
-            if re.search(rf"<name>\s*{re.escape(name)}\s*</name>", text):
-                return xml.parent
-    raise LaunchError(
-        f"package '{name}' not found",
-        hint="run from the package's folder, or use a path instead of $(find ...)",
-    )
+    try:
+        return lookup(name, near)
+    except PackageLookupError as error:
+        raise LaunchError(error.message, hint=error.hint) from None
 
 
 # --- ROS names as roslaunch joins them ------------------------------------------------------

@@ -196,7 +196,11 @@ def _replacement(body: str, words: list[str], scope: Scope) -> str:
         return _anon(scope, _one_word("anon", words[1:], body))
     if command == "dirname":
         return str(scope.filename.parent)
-    return str(scope.find(_one_word("find", words[1:], body)))
+    name = _one_word("find", words[1:], body)
+    try:
+        return str(scope.find(name))
+    except WorkbenchError as error:  # a package that is not there
+        raise SubstitutionError(f"$(find {name}): {error.message}", error.hint) from None
 
 
 def _pass(text: str, scope: Scope, commands: tuple[str, ...], limit: int) -> str:

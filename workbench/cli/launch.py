@@ -13,8 +13,13 @@ if TYPE_CHECKING:
 def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "target",
-        nargs="+",
+        nargs="*",
         help="a launch file (.launch/.xml or .yaml), or PACKAGE FILE; then arg:=value pairs",
+    )
+    parser.add_argument(
+        "--which",
+        metavar="PACKAGE",
+        help="print the folder PACKAGE is found in, where it was found and what it shadows",
     )
     parser.add_argument("--uri", help="the core's address (default $WORKBENCH_MASTER_URI)")
     parser.add_argument(
@@ -30,10 +35,27 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.which:
+        return which(args.which)
     path, values = split_target(args.target)
     if args.ros_args:
         return print_args(path, values)
     return launch(path, values, uri=args.uri, dry_run=args.dry_run)
+
+
+def which(package: str) -> int:
+    """Print where ``package`` is found (``rospack find``, with the origin and what it shadows).
+
+    Raises:
+        PackageLookupError: No such package on the search path.
+    """
+    from workbench.ros_packages import locate_package
+
+    location = locate_package(package)
+    print(f"{location.path}  ({location.origin})")
+    for shadowed in location.shadows:
+        print(f"  shadows {shadowed}")
+    return 0
 
 
 def _shipped_launch_file(name: str) -> Path | None:
@@ -67,7 +89,10 @@ def split_target(target: list[str]) -> tuple[Path, dict[str, str]]:
             if candidate.is_file():
                 return candidate, values
         raise LaunchError(f"no launch file {words[1]} in package {words[0]} ({package})")
-    raise LaunchError("give a launch file, or a package and a launch file name")
+    raise LaunchError(
+        "give a launch file, or a package and a launch file name",
+        hint="workbench launch PACKAGE FILE [arg:=value ...], or --which PACKAGE",
+    )
 
 
 def run_command(command: str, launch_file: Path) -> str:
