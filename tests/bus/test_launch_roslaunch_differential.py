@@ -24,7 +24,8 @@ not this computer, ``binfile=`` outside a dry run, and a negative or NaN ``respa
 a ``<node>`` without ``name`` takes its type's name (roslaunch requires one).
 
 Skips (fails under WORKBENCH_REQUIRE_ALL=1) without ``/usr/bin/python3`` able to import
-roslaunch.
+roslaunch (``python3-roslaunch``) and catkin (``python3-catkin``, which roslaunch's
+``$(find pkg)/path`` imports).
 """
 
 from __future__ import annotations
@@ -41,6 +42,7 @@ RANDOM_CASES = 50
 @pytest.fixture(scope="module")
 def corpus():
     ros_python("roslaunch", "python3-roslaunch")
+    ros_python("catkin.find_in_workspaces", "python3-catkin")  # roslaunch's $(find pkg)/path
     with benchmark_modules("launch_corpus") as (module,):
         yield module
 
