@@ -91,7 +91,7 @@ def load_launch(
             ``workbench launch`` passes; without it they are refused).
 
     Raises:
-        LaunchError: Unreadable file, bad XML/YAML, a missing or undeclared arg, a bad
+        LaunchError: Unreadable file, bad XML/YAML, a missing arg, a bad
             value, an include cycle, a remote machine, or a bound passed.
     """
     file = Path(path)
@@ -103,13 +103,10 @@ def load_launch(
     given = dict(args or {})
     shared = LaunchShared(dry_run, command_runner or run_command, _load_file, evaluate, top)
     _load_file(top, LaunchContext(top, given, shared), plan)
-    undeclared = sorted(set(given) - shared.top_declared)
-    if undeclared:
-        raise LaunchError(
-            f"argument '{undeclared[0]}' is not declared in the launch file",
-            path=file,
-            hint="check its spelling; roslaunch would ignore it",
-        )
+    for name in sorted(set(given) - shared.top_declared):
+        # roslaunch ignores a command-line value no <arg> declares (gui:=false to a file
+        # without a gui arg); a warning still catches a misspelt name.
+        plan.warnings.append(f"{file}: argument '{name}' is not declared; ignored")
     names = [spec.full_name for spec in plan.nodes]
     duplicates = sorted({n for n in names if names.count(n) > 1})
     if duplicates:
