@@ -62,6 +62,7 @@ BUILTIN_PLUGINS: dict[str, str] = {
     "libgazebo_ros_planar_move.so": (
         "workbench.sim.gazebo_ros_plugins.planar_move:GazeboRosPlanarMove"
     ),
+    "libgazebo_ros_control.so": "workbench.sim.ros_control.plugin:GazeboRosControl",
     # gazebo_ros sensor plugins (workbench.sim.sensors)
     "libgazebo_ros_laser.so": "workbench.sim.sensors.laser_plugin:GazeboRosLaser",
     "libgazebo_ros_gpu_laser.so": "workbench.sim.sensors.laser_plugin:GazeboRosLaser",
