@@ -63,6 +63,9 @@ BUILTIN_PLUGINS: dict[str, str] = {
         "workbench.sim.gazebo_ros_plugins.planar_move:GazeboRosPlanarMove"
     ),
     "libgazebo_ros_control.so": "workbench.sim.ros_control.plugin:GazeboRosControl",
+    "libgazebo_ros_imu.so": "workbench.sim.gazebo_ros_plugins.imu:GazeboRosImu",
+    "libgazebo_ros_p3d.so": "workbench.sim.gazebo_ros_plugins.p3d:GazeboRosP3D",
+    "libgazebo_ros_ft_sensor.so": "workbench.sim.gazebo_ros_plugins.ft_sensor:GazeboRosFT",
     # gazebo_ros sensor plugins (workbench.sim.sensors)
     "libgazebo_ros_laser.so": "workbench.sim.sensors.laser_plugin:GazeboRosLaser",
     "libgazebo_ros_gpu_laser.so": "workbench.sim.sensors.laser_plugin:GazeboRosLaser",
@@ -70,6 +73,7 @@ BUILTIN_PLUGINS: dict[str, str] = {
     "libgazebo_ros_openni_kinect.so": "workbench.sim.sensors.camera_plugin:GazeboRosOpenniKinect",
     "libgazebo_ros_depth_camera.so": "workbench.sim.sensors.camera_plugin:GazeboRosDepthCamera",
     "libgazebo_ros_imu_sensor.so": "workbench.sim.sensors.imu_plugin:GazeboRosImuSensor",
+    "libgazebo_ros_bumper.so": "workbench.sim.sensors.bumper_plugin:GazeboRosBumper",
     # Gazebo's own model plugins (workbench.sim.gazebo_plugins)
     "libFollowerPlugin.so": "workbench.sim.gazebo_plugins.follower:FollowerPlugin",
 }
