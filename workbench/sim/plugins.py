@@ -207,8 +207,9 @@ def load_plugin_class(spec: PluginSpec) -> type[Plugin]:
     if filename.startswith("lib") and filename.endswith(".so"):
         provided = ", ".join(sorted(BUILTIN_PLUGINS)) or "none"
         raise UnavailablePluginError(
-            f"Gazebo plugin '{filename}' ('{spec.name}'{where}) is not available in workbench",
-            hint=f"it is skipped; workbench provides {provided}, and Python plugins",
+            f"Gazebo plugin '{filename}' ('{spec.name}'{where}) is not provided by workbench; "
+            "the model runs without it",
+            hint=f"workbench provides {provided}, and Python plugins (README: gazebo_ros plugins)",
         )
     if filename.endswith(".py"):
         path = _find_file(filename, spec.base_dir)
