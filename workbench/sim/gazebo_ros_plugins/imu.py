@@ -63,7 +63,7 @@ class GazeboRosImu(ModelPlugin):
         self.update_rate = max(ros.number("updateRate", 0.0), 0.0)
         from pydrake.math import RollPitchYaw
 
-        self.offset = RollPitchYaw(vector(ros.text("rpyOffset"))).ToRotationMatrix()
+        self.offset = RollPitchYaw(*vector(ros.text("rpyOffset"))).ToRotationMatrix()
         self.rng = np.random.default_rng(noise_seed(model.name, sdf.name))
         X_WL, v_W, _ = link_state(model.server.world, self.link)
         self.last = (model.sim_time, v_W)

@@ -73,7 +73,7 @@ class GazeboRosP3D(ModelPlugin):
         self.xyz = vector(ros.text("xyzOffset"))
         from pydrake.math import RollPitchYaw
 
-        self.rpy = RollPitchYaw(vector(ros.text("rpyOffset"))).ToRotationMatrix()
+        self.rpy = RollPitchYaw(*vector(ros.text("rpyOffset"))).ToRotationMatrix()
         self.noise = ros.number("gaussianNoise", 0.0)
         self.update_rate = max(ros.number("updateRate", 0.0), 0.0)
         self.rng = np.random.default_rng(noise_seed(model.name, sdf.name))

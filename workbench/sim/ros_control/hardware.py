@@ -222,7 +222,7 @@ class RobotHWSim:
                 step = joint.command - before if before is not None else 0.0
                 velocities[joint.name] = step / period if period > 0 else 0.0
                 joint.written = joint.command
-            elif joint.interface == POSITION:
+            elif joint.interface == POSITION and joint.pid is not None:
                 efforts[joint.name] = _clamp(
                     joint.pid.command_from_error(_position_error(joint), period), joint.effort_limit
                 )

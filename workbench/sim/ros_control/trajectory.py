@@ -244,9 +244,9 @@ def build_trajectory(
         [list(segments) for segments in current] if current else [[] for _ in joint_names]
     )
     if current:
-        for segments in result:  # the rest of the current trajectory belongs to this goal
-            active = find_segment(segments, now)
-            for segment in segments[active or 0 :]:
+        for kept in result:  # the rest of the current trajectory belongs to this goal
+            active = find_segment(kept, now)
+            for segment in kept[active or 0 :]:
                 segment.goal = goal
     for column, name in enumerate(names):
         joint = list(joint_names).index(name)

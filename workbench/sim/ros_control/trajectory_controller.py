@@ -154,13 +154,11 @@ class JointTrajectoryController(Controller):
             self.desired = [(h.position, h.velocity, 0.0) for h in self.handles]
             self._hold(time)
             self.last_state_publish = time
-            for handle, pid in zip(
-                self.handles, self.pids or [None] * len(self.handles), strict=True
-            ):
-                if pid is None:
+            for i, handle in enumerate(self.handles):
+                if not self.pids:
                     handle.command = handle.position
                 else:
-                    pid.reset()
+                    self.pids[i].reset()
                     handle.command = 0.0
 
     def stopping(self, time: float) -> None:

@@ -122,7 +122,7 @@ class GazeboRosBumper(RosSensorPlugin):
         context = plant.GetMyContextFromRoot(world.context)
         results = plant.get_contact_results_output_port().Eval(context)
         inspector = world.scene_graph.model_inspector()
-        pairs: dict[tuple[str, str], list[tuple[np.ndarray, ...]]] = {}
+        pairs: dict[tuple[str, str], list[tuple[Any, ...]]] = {}
         body = world.body(f"{self.model.name}::{self.spec.link}")
         X_WL = plant.EvalBodyPoseInWorld(context, body)
         R_LW = X_WL.rotation().inverse()
