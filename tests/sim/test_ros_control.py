@@ -361,3 +361,16 @@ def test_controller_manager_command_lists_as_the_ros_tool_prints(rig, capsys):
     assert _command(rig.node, "kill", ["eff_joint_traj_controller"]) == 0
     assert "eff_joint_traj_controller" not in rig.states()
     assert math.isfinite(rig.positions()[0])
+
+
+def test_after_a_world_reset_the_controllers_hold_and_follow_goals_again(rig):
+    rig.spawn("eff_joint_traj_controller")
+    client = _client(rig)
+    client.send_goal(_goal([0.6, -0.8]))
+    assert client.wait_for_result(120) and client.get_state() == 3
+    rig.server.reset(time_too=True)  # /gazebo/reset_simulation: time back to 0
+    assert rig.states() == {"eff_joint_traj_controller": "running"}
+    client.send_goal(_goal([0.3, 0.2]))
+    assert client.wait_for_result(120)
+    assert client.get_result().error_code == FollowJointTrajectoryResult.SUCCESSFUL
+    assert rig.positions() == pytest.approx([0.3, 0.2], abs=0.02)
