@@ -8,8 +8,8 @@ command handle, of the first ``<hardwareInterface>`` it names (with or without t
   (Gazebo's ``Joint::SetForce``).
 * **Position**: without PID gains the joint is put at the command (Gazebo's
   ``Joint::SetPosition``): workbench sets the joint's position in the plant's state
-  and gives it the velocity of the commands (their change over the control period),
-  so the arm moves kinematically, through contacts, as in Gazebo. With gains under
+  and gives it the velocity of the commands (their change over the control period):
+  the joint moves kinematically, whatever it touches, as in Gazebo. With gains under
   ``<robotNamespace>/gazebo_ros_control/pid_gains/<joint>`` (``p``, ``i``, ``d``,
   ``i_clamp``) a PID on the position error (the shortest turn within the limits for
   a revolute joint) gives the effort, clamped to the joint's effort limit.
