@@ -153,5 +153,5 @@ def test_a_plugin_on_the_wrong_kind_of_sensor_is_one_line_and_not_loaded(caplog)
 def test_a_sensor_type_workbench_does_not_simulate_is_a_warning():
     from workbench.sim.sensors.check import check_sensors
 
-    model = sdf_model(sensor_robot_sdf("bot", '<sensor type="contact" name="bump"/>'))
+    model = sdf_model(sensor_robot_sdf("bot", '<sensor type="gps" name="gps"/>'))
     assert check_sensors(model) == {}

@@ -158,7 +158,7 @@ def test_plugin_files_that_are_missing_empty_or_fail_to_load_are_refused(tmp_pat
     syntax = _write(tmp_path, "syntax.py", "def broken(:\n")
     with pytest.raises(SimulationError, match=r"syntax.py:1: SyntaxError"):
         load_plugin_class(plugin_spec(syntax, "syntax"))
-    with pytest.raises(UnavailablePluginError, match="'libgazebo_no_such.so'.*not available"):
+    with pytest.raises(UnavailablePluginError, match="'libgazebo_no_such.so'.*not provided"):
         load_plugin_class(plugin_spec("libgazebo_no_such.so", "nothing"))
     raising = _write(
         tmp_path,

@@ -1,14 +1,20 @@
 """Message and service definitions the labs need that the Noetic typestore lacks.
 
 The text of each entry is the package's own ``.msg``/``.srv`` file, verbatim;
-the ``gazebo_msgs`` and ``move_base_msgs`` types, written as fields and constants only,
-are added from :mod:`workbench.msgs._gazebo_definitions` and
-:mod:`workbench.msgs._move_base_definitions`.
+the ``gazebo_msgs``, ``move_base_msgs``, ``control_msgs`` and ``controller_manager_msgs``
+types, written as fields and constants only, are added from
+:mod:`workbench.msgs._gazebo_definitions`, :mod:`workbench.msgs._move_base_definitions`
+and :mod:`workbench.msgs._control_definitions`.
 """
 
 from __future__ import annotations
 
-from workbench.msgs import _gazebo_definitions, _move_base_definitions, _noetic_definitions
+from workbench.msgs import (
+    _control_definitions,
+    _gazebo_definitions,
+    _move_base_definitions,
+    _noetic_definitions,
+)
 
 #: "package/Name" -> .msg text
 MESSAGES: dict[str, str] = {
@@ -143,3 +149,5 @@ SERVICES.update(_gazebo_definitions.SERVICES)
 MESSAGES.update(_noetic_definitions.MESSAGES)
 MESSAGES.update(_move_base_definitions.MESSAGES)
 SERVICES.update(_noetic_definitions.SERVICES)
+MESSAGES.update(_control_definitions.MESSAGES)
+SERVICES.update(_control_definitions.SERVICES)

@@ -112,6 +112,39 @@ class ModelHandle:
         self._world.joint(self.name, joint)  # checks the name
         self._server.set_plugin_effort(self._owner, (self.name, joint), float(effort))
 
+    def set_joint_efforts(self, efforts: Mapping[str, float]) -> None:
+        """Apply ``{joint: effort}`` (N m or N) on 1-dof joints until this plugin's next
+        update, all at once (one call per control step instead of one per joint)."""
+        checked = {}
+        for joint, effort in efforts.items():
+            if not np.isfinite(effort):
+                raise SimulationError(f"joint '{joint}' of '{self.name}': effort is not finite")
+            self._world.joint(self.name, joint)  # checks the name
+            checked[(self.name, joint)] = float(effort)
+        self._server.set_plugin_efforts(self._owner, checked)
+
+    def set_joint_states(
+        self, positions: Mapping[str, float], velocities: Mapping[str, float] | None = None
+    ) -> None:
+        """Move 1-dof joints to ``positions`` now and give them ``velocities`` (default: kept),
+        in one write of the state (Gazebo's ``Joint::SetPosition`` for several joints)."""
+        plant = self._world.plant
+        context = self._context()
+        q = plant.GetPositions(context).copy()
+        v = plant.GetVelocities(context).copy()
+        for joint, value in positions.items():
+            q[self._world.joint(self.name, joint).position_start()] = float(value)
+        for joint, value in (velocities or {}).items():
+            v[self._world.joint(self.name, joint).velocity_start()] = float(value)
+        plant.SetPositions(context, q)
+        plant.SetVelocities(context, v)
+
+    def link_twist(self, link: str) -> tuple[np.ndarray, np.ndarray]:
+        """``(v_W, w_W)``: velocity of a link's origin and its angular velocity, in W."""
+        body = self._world.body(f"{self.name}::{link}")
+        V = self._world.plant.EvalBodySpatialVelocityInWorld(self._context(), body)
+        return np.array(V.translational()), np.array(V.rotational())
+
     def apply_wrench(
         self, link: str, force: Sequence[float], torque: Sequence[float] = (0.0, 0.0, 0.0)
     ) -> None:

@@ -62,6 +62,10 @@ BUILTIN_PLUGINS: dict[str, str] = {
     "libgazebo_ros_planar_move.so": (
         "workbench.sim.gazebo_ros_plugins.planar_move:GazeboRosPlanarMove"
     ),
+    "libgazebo_ros_control.so": "workbench.sim.ros_control.plugin:GazeboRosControl",
+    "libgazebo_ros_imu.so": "workbench.sim.gazebo_ros_plugins.imu:GazeboRosImu",
+    "libgazebo_ros_p3d.so": "workbench.sim.gazebo_ros_plugins.p3d:GazeboRosP3D",
+    "libgazebo_ros_ft_sensor.so": "workbench.sim.gazebo_ros_plugins.ft_sensor:GazeboRosFT",
     # gazebo_ros sensor plugins (workbench.sim.sensors)
     "libgazebo_ros_laser.so": "workbench.sim.sensors.laser_plugin:GazeboRosLaser",
     "libgazebo_ros_gpu_laser.so": "workbench.sim.sensors.laser_plugin:GazeboRosLaser",
@@ -69,6 +73,7 @@ BUILTIN_PLUGINS: dict[str, str] = {
     "libgazebo_ros_openni_kinect.so": "workbench.sim.sensors.camera_plugin:GazeboRosOpenniKinect",
     "libgazebo_ros_depth_camera.so": "workbench.sim.sensors.camera_plugin:GazeboRosDepthCamera",
     "libgazebo_ros_imu_sensor.so": "workbench.sim.sensors.imu_plugin:GazeboRosImuSensor",
+    "libgazebo_ros_bumper.so": "workbench.sim.sensors.bumper_plugin:GazeboRosBumper",
     # Gazebo's own model plugins (workbench.sim.gazebo_plugins)
     "libFollowerPlugin.so": "workbench.sim.gazebo_plugins.follower:FollowerPlugin",
 }
@@ -202,8 +207,9 @@ def load_plugin_class(spec: PluginSpec) -> type[Plugin]:
     if filename.startswith("lib") and filename.endswith(".so"):
         provided = ", ".join(sorted(BUILTIN_PLUGINS)) or "none"
         raise UnavailablePluginError(
-            f"Gazebo plugin '{filename}' ('{spec.name}'{where}) is not available in workbench",
-            hint=f"it is skipped; workbench provides {provided}, and Python plugins",
+            f"Gazebo plugin '{filename}' ('{spec.name}'{where}) is not provided by workbench; "
+            "the model runs without it",
+            hint=f"workbench provides {provided}, and Python plugins (README: gazebo_ros plugins)",
         )
     if filename.endswith(".py"):
         path = _find_file(filename, spec.base_dir)

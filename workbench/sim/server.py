@@ -433,6 +433,11 @@ class SimServer:
         owner.efforts[key] = effort
         self._push_forces()
 
+    def set_plugin_efforts(self, owner: Any, efforts: Mapping[tuple[str, str], float]) -> None:
+        """Set several joint efforts ``{(model, joint): effort}`` until ``owner``'s next update."""
+        owner.efforts.update(efforts)
+        self._push_forces()
+
     def set_plugin_wrench(self, owner: Any, body: str, force: Any, torque: Any) -> None:
         """Add a wrench on ``body`` (scoped ``model::link``) until ``owner``'s next update."""
         owner.wrenches.append((body, np.asarray(force, float), np.asarray(torque, float)))

@@ -6,10 +6,16 @@ import logging
 
 from workbench.errors import SimulationError
 from workbench.sim.model_spec import SimModel
-from workbench.sim.sensors.spec import CAMERA_TYPES, IMU_TYPES, LASER_TYPES, parse_sensor
+from workbench.sim.sensors.spec import (
+    CAMERA_TYPES,
+    CONTACT_TYPES,
+    IMU_TYPES,
+    LASER_TYPES,
+    parse_sensor,
+)
 
 _LOG = logging.getLogger("workbench.sim")
-SIMULATED_TYPES = LASER_TYPES + CAMERA_TYPES + IMU_TYPES
+SIMULATED_TYPES = LASER_TYPES + CAMERA_TYPES + IMU_TYPES + CONTACT_TYPES
 
 
 def check_sensors(model: SimModel) -> dict[str, str]:

@@ -29,6 +29,7 @@ from workbench.errors import SimulationError
 LASER_TYPES = ("ray", "gpu_ray")
 CAMERA_TYPES = ("camera", "depth")
 IMU_TYPES = ("imu",)
+CONTACT_TYPES = ("contact",)
 
 #: Image formats of SDF's ``<image><format>`` workbench renders, and their ROS encodings.
 IMAGE_ENCODINGS = {
@@ -164,6 +165,13 @@ class ImuSpec(SensorSpec):
     )
 
 
+@dataclass(frozen=True)
+class ContactSpec(SensorSpec):
+    """A ``contact`` sensor (SDF ``<contact>``): the collisions of its link it watches."""
+
+    collisions: tuple[str, ...] = ()
+
+
 def parse_sensor(xml: str | Any, *, model: str, link: str) -> SensorSpec:
     """The spec of one ``<sensor>`` element (XML text or an lxml element).
 
@@ -181,10 +189,20 @@ def parse_sensor(xml: str | Any, *, model: str, link: str) -> SensorSpec:
         return _camera(reader, common)
     if kind in IMU_TYPES:
         return _imu(reader, common)
-    raise reader.error(
-        "type",
-        f"is '{kind}'; workbench simulates {', '.join(LASER_TYPES + CAMERA_TYPES + IMU_TYPES)}",
-    )
+    if kind in CONTACT_TYPES:
+        return _contact(reader, common)
+    simulated = LASER_TYPES + CAMERA_TYPES + IMU_TYPES + CONTACT_TYPES
+    raise reader.error("type", f"is '{kind}'; workbench simulates {', '.join(simulated)}")
+
+
+def _contact(reader: _Reader, common: dict[str, Any]) -> ContactSpec:
+    contact = reader.find("contact")
+    if contact is None:
+        raise reader.error("contact", "is missing")
+    names = tuple((c.text or "").strip() for c in contact.findall("collision"))
+    if not names or not all(names):
+        raise reader.error("contact/collision", "must name a collision of the link")
+    return ContactSpec(**common, collisions=names)
 
 
 def _laser(reader: _Reader, common: dict[str, Any]) -> LaserSpec:
