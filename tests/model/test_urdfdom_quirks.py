@@ -16,8 +16,9 @@ Each quirk says where urdfdom decides it (urdfdom 3.0.1 ``urdf_parser/src``, and
 urdfdom_headers 1.0.5 for colours); ``ros_accepts`` is asserted against the real
 tool too, so a quirk that stops being what it claims fails here.
 
-Four things urdfdom accepts stay errors, because nothing downstream of it in ROS
-shows them either (see test_accepted_by_urdfdom_but_broken_downstream).
+Three things urdfdom accepts stay errors, because nothing downstream of it in ROS
+shows them either (test_accepted_by_urdfdom_but_broken_downstream): a zero joint
+axis, a link with two parents, a mesh file that is not there.
 """
 
 from __future__ import annotations
@@ -345,3 +346,49 @@ def test_random_variants(ros_tools, tmp_path, seed):
 def test_the_variants_have_both_outcomes():
     outcomes = {all(q.ros_accepts for q in variant(seed)[1]) for seed in range(SEEDS)}
     assert outcomes == {True, False}
+
+
+# --- what urdfdom reads but nothing after it in ROS can use ---------------------------
+
+#: (name, change, why ROS cannot show it either, the element workbench's error is about)
+BROKEN_DOWNSTREAM = [
+    (
+        "zero axis",
+        lambda m: m.joints["j1"].__setitem__(3, '<axis xyz="0 0 0"/>'),
+        "kdl_parser divides the axis by its norm: robot_state_publisher sends NaN poses",
+        "joint 'j1'",
+    ),
+    (
+        "link with two parents",
+        lambda m: (
+            m.joints.__setitem__("again", ['<parent link="base"/>', '<child link="l2"/>']),
+            m.kinds.__setitem__("again", "fixed"),
+        ),
+        "KDL's tree takes a segment once: robot_state_publisher cannot build the tree",
+        "joint 'again'",
+    ),
+    (
+        "missing mesh file",
+        lambda m: m.visual("l1", '<mesh filename="no_such_part.stl"/>'),
+        "RViz cannot load the mesh and shows the link as an error",
+        "link 'l1'",
+    ),
+]
+
+
+@pytest.mark.parametrize(
+    ("name", "change", "why", "element"),
+    BROKEN_DOWNSTREAM,
+    ids=[case[0] for case in BROKEN_DOWNSTREAM],
+)
+def test_accepted_by_urdfdom_but_broken_downstream(ros_tools, tmp_path, name, change, why, element):
+    """The deliberate differences: check_urdf passes these, workbench gives one error."""
+    model = Model.base()
+    change(model)
+    path = tmp_path / "quirky.urdf"
+    path.write_text(model.text())
+    ros = subprocess.run([ros_tools.check_urdf, str(path)], capture_output=True, timeout=60)
+    assert ros.returncode == 0 and b"Error" not in ros.stderr, why
+    status, stdout, _ = _main("check", "--json", str(path))
+    errors = [f for f in json.loads(stdout)["findings"] if f["severity"] == "error"]
+    assert status == 1 and [f["element"] for f in errors] == [element], errors
