@@ -392,3 +392,24 @@ def test_accepted_by_urdfdom_but_broken_downstream(ros_tools, tmp_path, name, ch
     status, stdout, _ = _main("check", "--json", str(path))
     errors = [f for f in json.loads(stdout)["findings"] if f["severity"] == "error"]
     assert status == 1 and [f["element"] for f in errors] == [element], errors
+
+
+def test_drake_warnings_keep_the_files_lines(tmp_path):
+    """Drake reads the rewritten robot; its lines must stay the file's (a removed
+    multi-line material, a dropped transmission) and name the element there, also a
+    tag whose attributes span two lines (lxml counts its last line, Drake its first)."""
+    path = tmp_path / "lines.urdf"
+    path.write_text(
+        '<?xml version="1.0"?>\n<robot name="lines">\n'
+        '  <material name="">\n    <color rgba="0.5 0.5 0.5 1"/>\n  </material>\n'
+        '  <transmission name="t">\n    <type/>\n  </transmission>\n'
+        f'  <link name="a">\n    {INERTIAL}\n  </link>\n'
+        f'  <link name="b">\n    {INERTIAL}\n  </link>\n'
+        '  <joint name="j" type="continuous">\n    <parent link="a"/><child link="b"/>\n'
+        '    <dynamics damping="0.1"\n              friction="0.2"/>\n  </joint>\n</robot>\n'
+    )
+    status, stdout, _ = _main("check", "--json", str(path))
+    report = json.loads(stdout)
+    friction = [f for f in report["findings"] if "friction" in f["message"]]
+    assert status == 0 and report["loaded"]
+    assert [(f["element"], f["line"]) for f in friction] == [("joint 'j'", 17)]

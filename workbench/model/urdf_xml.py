@@ -143,13 +143,18 @@ class UrdfDocument:
         """``link 'x'`` or ``joint 'y'`` for the element on ``line`` (``model`` if none)."""
         if line is None:
             return "model"
-        for element in self.root.iter():
-            if element.sourceline == line and isinstance(element.tag, str):
-                if element.tag in ("link", "joint"):
-                    return f"{element.tag} '{element.get('name')}'"
-                for ancestor in element.iterancestors():
-                    if ancestor.tag in ("link", "joint"):
-                        return f"{ancestor.tag} '{ancestor.get('name')}'"
+        elements = [e for e in self.root.iter() if isinstance(e.tag, str) and e.sourceline]
+        # lxml gives the line a start tag ends on, Drake the one it starts on: a tag whose
+        # attributes span lines is the first element at or after ``line``.
+        at = [e for e in elements if e.sourceline == line] or [
+            e for e in elements if e.sourceline > line
+        ][:1]
+        for element in at:
+            if element.tag in ("link", "joint"):
+                return f"{element.tag} '{element.get('name')}'"
+            for ancestor in element.iterancestors():
+                if ancestor.tag in ("link", "joint"):
+                    return f"{ancestor.tag} '{ancestor.get('name')}'"
         return "model"
 
     def link_infos(self) -> list[LinkInfo]:
