@@ -148,3 +148,46 @@ def test_ros_reindexes_an_unindexed_workbench_recording(tmp_path, ros_python):
     rows = json.loads(_ros(ros_python, READ_ALL, str(cut)))["rows"]
     assert [row[1] for row in rows] == [float(i) for i in range(written)]
     assert [m.msg.linear.x for m in read_messages(cut)] == [float(i) for i in range(written)]
+
+
+# --- empty bags: a recording in which nothing was published ---------------------------
+
+ROS_INFO = (
+    "import sys, rosbag\n"
+    "bag = rosbag.Bag(sys.argv[1])\n"
+    "print(bag)\n"
+    "print(bag.get_message_count(), len(list(bag.read_messages())))\n"
+)
+
+
+@pytest.mark.parametrize("compression", ["none", "bz2", "lz4"])
+def test_workbench_reads_an_empty_bag_ros_writes(tmp_path, ros_python, compression, capsys):
+    """rosbag closes an empty bag with its index at the very end of the file
+    (``index_pos`` = file size, no connection or chunk records): a valid, empty bag."""
+    from workbench.bag import summarize
+    from workbench.cli import main
+
+    script = "import sys, rosbag\nrosbag.Bag(sys.argv[1], 'w', compression=sys.argv[2]).close()\n"
+    _ros(ros_python, script, str(tmp_path / "empty.bag"), compression)
+    path = tmp_path / "empty.bag"
+    assert list(read_messages(path)) == []
+    summary = summarize(path)
+    assert summary.message_count == 0 and summary.indexed and summary.damage is None
+    # `rosbag info` prints rosbag's Bag.__str__: path, version and size, nothing else.
+    ros_info = _ros(ros_python, ROS_INFO, str(path)).splitlines()
+    assert ros_info[-1] == "0 0"
+    assert main(["bag", "info", str(path)]) == 0
+    assert capsys.readouterr().out.splitlines() == ros_info[:-1]
+
+
+def test_ros_reads_an_empty_bag_workbench_writes(tmp_path, ros_python):
+    path = tmp_path / "wb_empty.bag"
+    with BagWriter(path):
+        pass
+    assert _ros(ros_python, ROS_INFO, str(path)).splitlines()[-1] == "0 0"
+    _ros(
+        ros_python,
+        "import sys, rosbag\nrosbag.Bag(sys.argv[1], 'w').close()\n",
+        str(tmp_path / "r.bag"),
+    )
+    assert path.read_bytes() == (tmp_path / "r.bag").read_bytes()  # rosbag's own bytes

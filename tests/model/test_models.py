@@ -58,11 +58,11 @@ def test_check_report_matches_golden(name):
     report = check_robot(REPO / "urdf" / name)
     golden = (GOLDEN / f"{_stem(name)}.check.txt").read_text()
     assert report.format(f"urdf/{name}") == golden
+    assert report.ok, report.format()
+    assert report.loaded
     if name == "simple_box.urdf":
-        assert [finding.code for finding in report.errors] == ["inertia-triangle-inequality"]
-    else:
-        assert report.ok, report.format()
-        assert report.loaded
+        # The manual's impossible inertia: ROS and Drake load it, so it is a warning.
+        assert [finding.code for finding in report.warnings] == ["inertia-triangle-inequality"]
 
 
 @pytest.mark.parametrize("name", MODELS)

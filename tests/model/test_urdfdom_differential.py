@@ -327,9 +327,10 @@ MUTATIONS = [
     Mutation("colourless material", _sub('<color rgba="0.5 0.5 0.5 1"/>', ""), 0, "material 'grey'"),
     # urdfdom warns (twice: it assigns a link's first visual twice); workbench warns.
     Mutation("undefined material", _sub('<material name="grey"/>', '<material name="tin"/>'), 0, ""),
-    # urdfdom keeps these shapes; Drake would abort the whole process on them.
-    Mutation("negative radius", _sub('radius="0.05" length', 'radius="-0.05" length'), 0, "link 'arm'"),
-    Mutation("zero box", _sub('"0.2 0.2 0.2"/></geometry></c', '"0 1 1"/></geometry></c'), 0, "link 'base'"),
+    # urdfdom keeps these shapes; workbench warns and leaves them out of what Drake gets
+    # (Drake would abort the whole process on them).
+    Mutation("negative radius", _sub('radius="0.05" length', 'radius="-0.05" length'), 0, ""),
+    Mutation("zero box", _sub('"0.2 0.2 0.2"/></geometry></c', '"0 1 1"/></geometry></c'), 0, ""),
     # A link with two parents: urdfdom prints it under both; workbench calls it an error.
     Mutation("two parents", _sub(LAST, _joint("again", "base", "hand")), 0, "joint 'again'"),
     # urdfdom refuses the file: check_urdf prints nothing on stdout.

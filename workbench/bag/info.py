@@ -49,8 +49,7 @@ def format_info(summary: BagSummary, *, name: str | None = None) -> str:
     rows.append(("version", "2.0" if summary.indexed else "2.0 (unindexed, recovered)"))
     start_ns, end_ns = summary.start_ns, summary.end_ns
     if start_ns is None or end_ns is None:
-        rows.append(("size", human_size(summary.size)))
-        rows.append(("messages", "0"))
+        rows.append(("size", human_size(summary.size)))  # all rosbag shows of an empty bag
     else:
         start, end = start_ns / 1e9, end_ns / 1e9
         rows.append(("duration", _duration_to_str(end - start)))

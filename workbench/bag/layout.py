@@ -123,6 +123,9 @@ def read_index(stream: BinaryIO, size: int) -> Layout:
         Corrupt: No index, or an index that cannot be trusted (then walk the records).
     """
     index_pos, conn_count, chunk_count, first = bag_header(stream, size)
+    if index_pos == size and index_pos >= first and conn_count == chunk_count == 0:
+        # An empty bag as rosbag closes it: an index of nothing, at the end of the file.
+        return Layout(size, {}, [], indexed=True)
     if not first <= index_pos < size:
         raise Corrupt("the bag has no index" if index_pos == 0 else "index_pos is outside", 0)
     connections: dict[int, Connection] = {}

@@ -30,6 +30,7 @@ from workbench.model.rules import (
 )
 from workbench.model.sources import read_description, resolve_robot_path
 from workbench.model.tree import KinematicTree, build_tree
+from workbench.model.urdf_for_drake import drake_findings
 from workbench.model.urdf_xml import UrdfDocument, parse_urdf_text
 from workbench.model.urdfdom_reader import read_ros_model
 
@@ -193,6 +194,7 @@ def check_document(
     findings += joint_findings(document)
     findings += geometry_findings(document)
     findings += mesh_findings(document)
+    findings += drake_findings(document.root)
     findings += urdfdom_findings(ros, findings)
     # Drake is asked only about models workbench finds no error in: it reports the
     # first problem only, and aborts the process on some (reversed joint limits).

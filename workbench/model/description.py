@@ -30,6 +30,7 @@ from workbench.model.meshes import prepare_mesh
 from workbench.model.packages import PackageResolver
 from workbench.model.sources import read_description, resolve_robot_path
 from workbench.model.tree import checked_tree
+from workbench.model.urdf_for_drake import adapt_for_drake
 from workbench.model.urdf_xml import UrdfDocument, parse_urdf_text
 
 if TYPE_CHECKING:
@@ -124,10 +125,10 @@ class RobotDescription:
         return list(self.document.joints) if self.document is not None else []
 
     def root_link(self) -> str:
-        """The URDF's root link, after checking the tree and limits Drake would abort on.
+        """The URDF's root link, after checking the tree.
 
         Raises:
-            ModelError: A broken tree (cycles, several roots, unknown links) or reversed limits.
+            ModelError: A broken tree (cycles, several roots, unknown links).
         """
         if self.document is None:
             raise ModelError(
@@ -138,7 +139,7 @@ class RobotDescription:
         return self._root_link
 
     def prepared_text(self, model_name: str | None = None) -> str:
-        """The URDF text for Drake: mesh URIs made absolute, forward material colours filled.
+        """The URDF text for Drake: as ROS reads it (:func:`adapt_for_drake`), mesh URIs absolute.
 
         Meshes are resolved (and converted where Drake needs it) on the first call only.
 
@@ -196,13 +197,13 @@ def _prepared_root(document: UrdfDocument, packages: PackageResolver) -> Any:
     path = document.path
     base = path.parent if path is not None else Path.cwd()
     root = copy.deepcopy(document.root)
+    adapt_for_drake(root)
     for mesh in root.iter("mesh"):
         filename = mesh.get("filename")
         if not filename:
             continue
         resolved = packages.resolve(filename, base, where=path, line=mesh.sourceline)
         mesh.set("filename", prepare_mesh(resolved, where=path, line=mesh.sourceline).as_uri())
-    _fill_forward_materials(root)
     return root
 
 
@@ -217,43 +218,6 @@ def prepared_urdf(document: UrdfDocument) -> str:
     return padding + etree.tostring(root, encoding="unicode")
 
 
-def _fill_forward_materials(root: Any) -> None:
-    """Give colour-less material references the colour defined later in the file.
-
-    ROS accepts ``<material name="black"/>`` in a visual before any
-    ``black`` has a colour (and draws it transparent); Drake refuses it. The
-    colour the file gives ``black`` later is used instead.
-    """
-    defined = {m.get("name") for m in root.iterchildren("material")}
-    later: dict[str, object] = {}
-    for material in root.iter("material"):
-        color = material.find("color")
-        if color is not None and material.get("name") not in later:
-            later[material.get("name")] = color
-    for link in root.iterchildren("link"):
-        for material in link.iter("material"):
-            name = material.get("name")
-            has_colour = material.find("color") is not None or material.find("texture") is not None
-            if has_colour:
-                defined.add(name)
-            elif name not in defined:
-                if name in later:
-                    material.append(copy.deepcopy(later[name]))
-                    defined.add(name)
-                else:
-                    material.getparent().remove(material)
-
-
 def _checked_root(document: UrdfDocument) -> str:
     root, _ = checked_tree(document)
-    for joint in document.joints:
-        # Drake aborts the whole process on reversed limits, so they never reach it.
-        if joint.lower is not None and joint.upper is not None and joint.lower > joint.upper:
-            raise ModelError(
-                f"joint '{joint.name}': lower limit {joint.lower:g} is above upper limit "
-                f"{joint.upper:g}",
-                path=document.path,
-                line=joint.line,
-                hint="swap them",
-            )
     return root

@@ -43,8 +43,11 @@ URDF_NUMBERS = frozenset(
     + ("rpy", "value", "rgba", "multiplier", "offset", "soft_lower_limit", "soft_upper_limit")
     + ("k_position", "k_velocity", "rising", "falling", "reference_position")
 )
-#: URDF elements whose ``name`` is a name Drake keeps.
-URDF_NAMED = ("robot", "link", "joint", "material", "visual", "collision", "transmission")
+#: URDF elements whose ``name`` is a name Drake keeps (materials reach Drake without one).
+URDF_NAMED = ("robot", "link", "joint", "visual", "collision", "transmission")
+#: Elements whose name may be blank: ROS reads ``name=""``, and Drake is given none
+#: (:mod:`workbench.model.urdf_for_drake`) and names them itself.
+_MAY_BE_EMPTY = ("visual", "collision", "transmission")
 #: SDF elements whose ``name`` is a name Drake keeps.
 SDF_NAMED = ("model", "link", "joint", "visual", "collision", "frame", "world", "include")
 #: SDF elements whose text is numbers.
@@ -104,7 +107,7 @@ def _check_names(root: Any, kinds: tuple[str, ...], path: Path | None) -> None:
         name = element.get("name")
         if element.tag in counts:
             counts[element.tag] += 1
-        if name is None:
+        if name is None or (not name.strip() and element.tag in _MAY_BE_EMPTY):
             continue
         problem = name_problem(name)
         if problem is not None:

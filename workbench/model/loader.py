@@ -76,8 +76,27 @@ def load_document(
     return description.document
 
 
+def _mesh_line(message: str, description: RobotDescription | None) -> int | None:
+    """The line of the ``<mesh>`` whose file Drake names in ``message``, if any."""
+    document = description.document if description is not None else None
+    if document is None or description is None:
+        return None
+    base = description.path.parent
+    for mesh in document.root.iter("mesh"):
+        try:
+            resolved = description.packages.resolve(mesh.get("filename", ""), base)
+        except ModelError:
+            continue
+        if str(resolved.resolve()) in message:
+            return mesh.sourceline
+    return None
+
+
 def _drake_error(
-    error: Exception, path: Path, document: UrdfDocument | None = None
+    error: Exception,
+    path: Path,
+    document: UrdfDocument | None = None,
+    description: RobotDescription | None = None,
 ) -> DrakeLoadError:
     text = str(error).strip()
     lines = [line for line in text.splitlines() if line.strip()]
@@ -86,6 +105,10 @@ def _drake_error(
     match = re.match(r"^(?:.*?):(\d+): (?:error: )?(.*)$", message)
     if match:
         line_number, message = int(match.group(1)), match.group(2)
+    message = message.removeprefix("error: ")
+    if line_number is None:
+        # A mesh Drake cannot read: name the link that uses it, not the model.
+        line_number = _mesh_line(message, description)
     if len(message) > _LONGEST_MESSAGE:  # Drake repeats names from the file, however long
         message = message[: _LONGEST_MESSAGE - 3] + "..."
     element = document.element_at(line_number) if document is not None else "model"
@@ -169,7 +192,7 @@ def load_robot(
             else:
                 instances = parser.AddModels(str(path))  # type: ignore[arg-type]
     except (RuntimeError, ValueError) as error:  # pydrake raises ValueError for bad vectors
-        raise _drake_error(error, path, document) from None
+        raise _drake_error(error, path, document, description) from None
     if not instances:
         raise ModelError("the file defines no model", path=path)
     instance = instances[0]
@@ -214,7 +237,7 @@ def load_robot(
             if not already_welded:
                 plant.WeldFrames(plant.world_frame(), root_body.body_frame())
         except RuntimeError as error:
-            raise _drake_error(error, path, document) from None
+            raise _drake_error(error, path, document, description) from None
 
     robot = Robot(
         name=name,
@@ -236,7 +259,7 @@ def load_robot(
         try:
             robot.finalize()
         except RuntimeError as error:
-            raise _drake_error(error, path, document) from None
+            raise _drake_error(error, path, document, description) from None
     return robot
 
 

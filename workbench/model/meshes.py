@@ -8,8 +8,13 @@ once.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
+import importlib.util
+import logging
 import os
+import warnings
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -59,6 +64,41 @@ def check_mesh(path: Path, *, where: Path | None = None, line: int | None = None
         raise MeshError(message, path=where, line=line, hint=error.hint) from None
 
 
+#: Loggers of the converters: they log tracebacks for textures they cannot find.
+_CONVERTER_LOGGERS = ("trimesh", "collada")
+#: Longest converter message kept in an error, characters.
+_LONGEST_REASON = 300
+
+
+@contextlib.contextmanager
+def _quiet_converters() -> Iterator[None]:
+    """Keep trimesh's and pycollada's log records and warnings off the terminal.
+
+    A mesh that converts needs no word from them (a missing texture is not drawn
+    anyway); one that does not gets workbench's own one-line error.
+    """
+    loggers = [logging.getLogger(name) for name in _CONVERTER_LOGGERS]
+    levels = [logger.level for logger in loggers]
+    for logger in loggers:
+        logger.setLevel(logging.CRITICAL + 1)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            yield
+    finally:
+        for logger, level in zip(loggers, levels, strict=True):
+            logger.setLevel(level)
+
+
+def _reason(error: Exception, suffix: str) -> str:
+    """Why a conversion failed, on one line."""
+    if isinstance(error, ImportError):
+        # trimesh reaches for optional modules when a file is not what its suffix says
+        return f"the file is damaged or not a {suffix} mesh"
+    text = " ".join(str(error).split()) or type(error).__name__
+    return text if len(text) <= _LONGEST_REASON else text[: _LONGEST_REASON - 3] + "..."
+
+
 def prepare_mesh(path: Path, *, where: Path | None = None, line: int | None = None) -> Path:
     """Return a path Drake can read for the mesh at ``path``, converting if needed.
 
@@ -77,18 +117,22 @@ def prepare_mesh(path: Path, *, where: Path | None = None, line: int | None = No
     try:
         import trimesh
 
-        mesh: Any = trimesh.load(str(path), force="mesh")  # a Trimesh with force="mesh"
-        if len(mesh.faces) == 0:
-            raise ValueError("the mesh has no triangles")
-        target.parent.mkdir(parents=True, exist_ok=True)
-        partial = target.with_suffix(f".{os.getpid()}.tmp")
-        mesh.export(str(partial), file_type="obj")
+        with _quiet_converters():
+            mesh: Any = trimesh.load(str(path), force="mesh")  # a Trimesh with force="mesh"
+            if len(mesh.faces) == 0:
+                raise ValueError("the mesh has no triangles")
+            target.parent.mkdir(parents=True, exist_ok=True)
+            partial = target.with_suffix(f".{os.getpid()}.tmp")
+            mesh.export(str(partial), file_type="obj")
         partial.replace(target)
     except Exception as error:  # trimesh raises many kinds; all mean "cannot convert"
         hint = "convert it to .obj yourself"
-        if suffix == ".dae":
+        if suffix == ".dae" and importlib.util.find_spec("collada") is None:
             hint = "reading .dae needs 'pip install pycollada', or convert it to .obj"
         raise MeshError(
-            f"cannot convert mesh {path} to OBJ: {error}", path=where, line=line, hint=hint
+            f"cannot convert mesh {path} to OBJ: {_reason(error, suffix)}",
+            path=where,
+            line=line,
+            hint=hint,
         ) from None
     return target

@@ -59,6 +59,12 @@ def _moves_itself(link: str, tree: KinematicTree) -> bool:
 
 
 def inertia_findings(document: UrdfDocument, tree: KinematicTree) -> list[Finding]:
+    """Missing, non-positive and unphysical masses and inertias.
+
+    Only what ROS's parser cannot read is an error (a ``<mass>`` missing, a value that is
+    not a finite number); masses and inertias no real body has are warnings, as ROS and
+    Drake load them (a simulator then misbehaves).
+    """
     findings = []
     moving = _moving_links(document, tree)
     for link in document.links:
@@ -92,7 +98,7 @@ def inertia_findings(document: UrdfDocument, tree: KinematicTree) -> list[Findin
         elif inertial.mass < 0 or (inertial.mass == 0 and _moves_itself(link.name, tree)):
             findings.append(
                 Finding(
-                    "error",
+                    "warning",
                     "non-positive-mass",
                     what,
                     f"mass is {inertial.mass:g} kg",
@@ -144,7 +150,7 @@ def inertia_findings(document: UrdfDocument, tree: KinematicTree) -> list[Findin
         if moments.min() < -_TOLERANCE * scale:
             findings.append(
                 Finding(
-                    "error",
+                    "warning",
                     "inertia-not-positive-definite",
                     what,
                     f"inertia is not positive definite (principal moments {text})",
@@ -157,7 +163,7 @@ def inertia_findings(document: UrdfDocument, tree: KinematicTree) -> list[Findin
         if a + b < c * (1 - 1e-6):
             findings.append(
                 Finding(
-                    "error",
+                    "warning",
                     "inertia-triangle-inequality",
                     what,
                     f"principal moments {text} violate the triangle inequality "
@@ -187,21 +193,6 @@ def joint_findings(document: UrdfDocument) -> list[Finding]:
                     )
                 )
             else:
-                if (
-                    joint.lower is not None
-                    and joint.upper is not None
-                    and joint.lower > joint.upper
-                ):
-                    findings.append(
-                        Finding(
-                            "error",
-                            "bad-limits",
-                            what,
-                            f"lower limit {joint.lower:g} is above upper limit {joint.upper:g}",
-                            "swap them",
-                            joint.line,
-                        )
-                    )
                 missing = [key for key in ("effort", "velocity") if getattr(joint, key) is None]
                 if missing:
                     findings.append(

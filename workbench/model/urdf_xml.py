@@ -143,13 +143,18 @@ class UrdfDocument:
         """``link 'x'`` or ``joint 'y'`` for the element on ``line`` (``model`` if none)."""
         if line is None:
             return "model"
-        for element in self.root.iter():
-            if element.sourceline == line and isinstance(element.tag, str):
-                if element.tag in ("link", "joint"):
-                    return f"{element.tag} '{element.get('name')}'"
-                for ancestor in element.iterancestors():
-                    if ancestor.tag in ("link", "joint"):
-                        return f"{ancestor.tag} '{ancestor.get('name')}'"
+        elements = [e for e in self.root.iter() if isinstance(e.tag, str) and e.sourceline]
+        # lxml gives the line a start tag ends on, Drake the one it starts on: a tag whose
+        # attributes span lines is the first element at or after ``line``.
+        at = [e for e in elements if e.sourceline == line] or [
+            e for e in elements if e.sourceline > line
+        ][:1]
+        for element in at:
+            if element.tag in ("link", "joint"):
+                return f"{element.tag} '{element.get('name')}'"
+            for ancestor in element.iterancestors():
+                if ancestor.tag in ("link", "joint"):
+                    return f"{ancestor.tag} '{ancestor.get('name')}'"
         return "model"
 
     def link_infos(self) -> list[LinkInfo]:
@@ -184,19 +189,14 @@ class _Reader:
         self.problems.append(problem)
         raise _Dropped(message)
 
-    def positive(self, element, what: str, values: dict[str, float], zero_ok: bool = False):
-        """Sizes Drake accepts (it aborts the process on others): finite and above zero."""
+    def finite(self, element, what: str, values: dict[str, float]) -> None:
+        """Sizes must be finite numbers (ROS cannot read inf either); a size of zero or
+        less is read as ROS reads it, and left out of what Drake gets
+        (:mod:`workbench.model.urdf_for_drake`)."""
         for key, value in values.items():
             if not math.isfinite(value):
                 self.fail(
                     f"{what}: {key} {value:g} is not a finite number",
-                    element,
-                    hint="give the shape's real size in metres",
-                )
-            if value < 0 or (value == 0 and not zero_ok):
-                bound = "zero or more" if zero_ok else "more than zero"
-                self.fail(
-                    f"{what}: {key} {value:g} must be {bound}",
                     element,
                     hint="give the shape's real size in metres",
                 )
@@ -240,10 +240,12 @@ class _Reader:
         return np.array(xyz), np.array(rpy)
 
     def rgba(self, material, what: str):
+        """The colour; as in urdfdom, an ``rgba`` without four numbers is opaque black."""
         color = material.find("color")
         if color is None:
             return None
-        return self.floats(color, "rgba", 4, f"{what} <color>")
+        values = self.floats(color, "rgba", None, f"{what} <color>")
+        return values if len(values) == 4 else (0.0, 0.0, 0.0, 1.0)
 
     def geometry(self, shape, what: str) -> Geometry | None:
         geometry = shape.find("geometry")
@@ -259,16 +261,16 @@ class _Reader:
         where = f"{what} <{kind}>"
         if kind == "box":
             size = self.floats(child, "size", 3, where)
-            self.positive(child, where, dict(zip(("width", "depth", "height"), size, strict=True)))
+            self.finite(child, where, dict(zip(("width", "depth", "height"), size, strict=True)))
             return Geometry(kind, child.sourceline, size)
         if kind in ("cylinder", "capsule"):
             radius = self.floats(child, "radius", 1, where)[0]
             length = self.floats(child, "length", 1, where)[0]
-            self.positive(child, where, {"radius": radius, "length": length})
+            self.finite(child, where, {"radius": radius, "length": length})
             return Geometry(kind, child.sourceline, (radius, length))
         if kind == "sphere":
             radius = self.floats(child, "radius", 1, where)
-            self.positive(child, where, {"radius": radius[0]}, zero_ok=True)
+            self.finite(child, where, {"radius": radius[0]})
             return Geometry(kind, child.sourceline, radius)
         if kind == "mesh":
             filename = child.get("filename")
@@ -280,12 +282,6 @@ class _Reader:
                     f'{where}: scale="{child.get("scale")}" is not a finite number',
                     child,
                     hint="scale every axis by a finite, non-zero factor",
-                )
-            if any(abs(value) < 1e-8 for value in scale):
-                self.fail(
-                    f'{where}: scale="{child.get("scale")}" has a zero component',
-                    child,
-                    hint="scale every axis by a non-zero factor",
                 )
             return Geometry(kind, child.sourceline, (), filename, scale)
         self.fail(
@@ -387,9 +383,17 @@ class _Reader:
             for key in limits:
                 if limit.get(key) is not None:
                     limits[key] = self.floats(limit, key, 1, f"{what} <limit>")[0]
-            if kind != "continuous":
-                limits["lower"] = 0.0 if limits["lower"] is None else limits["lower"]
-                limits["upper"] = 0.0 if limits["upper"] is None else limits["upper"]
+            # As Drake gets them (workbench.model.urdf_for_drake): ROS ignores a continuous
+            # joint's bounds, reversed ones are swapped, speeds and efforts are magnitudes.
+            if kind == "continuous":
+                limits["lower"] = limits["upper"] = None
+            else:
+                lower = 0.0 if limits["lower"] is None else limits["lower"]
+                upper = 0.0 if limits["upper"] is None else limits["upper"]
+                limits["lower"], limits["upper"] = min(lower, upper), max(lower, upper)
+            for key in ("velocity", "effort"):
+                value = limits[key]
+                limits[key] = abs(value) if value is not None else None
         return JointInfo(
             name,
             kind,
@@ -555,11 +559,11 @@ def parse_urdf_text(
         texture = element.find("texture")
         reader.link_label = f"material '{shown_name(material_name, 80)}'"
         try:
-            if not material_name:
+            if element.get("name") is None:
                 reader.fail("<material> has no name", element, hint='add name="..."')
             rgba = reader.rgba(element, f"material '{shown_name(material_name, 80)}'")
         except _Dropped:
-            if not material_name:
+            if element.get("name") is None:
                 continue
             rgba = None
         finally:
