@@ -21,13 +21,13 @@ lacks, is one error line.
 
 from __future__ import annotations
 
-import time
 from typing import Any
 
 import numpy as np
 
 from workbench.sim.gazebo_ros_plugins.links import noise_seed
 from workbench.sim.gazebo_ros_plugins.ros_context import PluginRos, ros_stamp
+from workbench.sim.listener_count import ListenerCount
 from workbench.sim.plugins import ModelPlugin, PluginSetupError, SdfElement, UpdateInfo
 
 
@@ -58,7 +58,7 @@ class GazeboRosFT(ModelPlugin):
         self.rng = np.random.default_rng(noise_seed(model.name, sdf.name))
         #: The last ``(force, torque)`` in the child frame, N and N m, or None.
         self.latest: tuple[np.ndarray, np.ndarray] | None = None
-        self._counted = (-1e9, 0)
+        self._listeners = ListenerCount()
         self.publisher = None
         if node is not None:
             self.publisher = node.create_publisher(
@@ -66,14 +66,7 @@ class GazeboRosFT(ModelPlugin):
             )
 
     def active(self) -> bool:
-        if self.publisher is None:
-            return True
-        now = time.monotonic()
-        checked, count = self._counted
-        if now - checked >= 0.2:
-            count = self.publisher.get_num_connections()
-            self._counted = (now, count)
-        return count > 0
+        return self.publisher is None or self._listeners(self.publisher) > 0
 
     def wrench(self) -> tuple[np.ndarray, np.ndarray]:
         """``(force, torque)`` on the child link at the joint, in the child frame, now."""

@@ -33,13 +33,13 @@ Gazebo. The service answers at once: the IMU is always calibrated. A missing
 
 from __future__ import annotations
 
-import time
 from typing import Any
 
 import numpy as np
 
 from workbench.sim.gazebo_ros_plugins.links import find_link, link_state, noise_seed, vector
 from workbench.sim.gazebo_ros_plugins.ros_context import PluginRos, ros_stamp
+from workbench.sim.listener_count import ListenerCount
 from workbench.sim.plugins import ModelPlugin, PluginSetupError, SdfElement, UpdateInfo
 
 
@@ -70,7 +70,7 @@ class GazeboRosImu(ModelPlugin):
         self.acceleration = np.zeros(3)
         #: The last message, or None.
         self.latest_message: Any = None
-        self._counted = (-1e9, 0)
+        self._listeners = ListenerCount()
         topic = ros.string("topicName", "/default_imu")
         self.publisher = None
         self.service = None
@@ -87,14 +87,7 @@ class GazeboRosImu(ModelPlugin):
             )
 
     def active(self) -> bool:
-        if self.publisher is None:
-            return True
-        now = time.monotonic()
-        checked, count = self._counted
-        if now - checked >= 0.2:
-            count = self.publisher.get_num_connections()
-            self._counted = (now, count)
-        return count > 0
+        return self.publisher is None or self._listeners(self.publisher) > 0
 
     def update(self, info: UpdateInfo) -> None:
         X_WL, v_W, w_W = link_state(self.model.server.world, self.link)

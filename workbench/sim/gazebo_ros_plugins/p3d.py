@@ -27,13 +27,13 @@ gazebo_ros_p3d and are ignored here too, with a warning. A missing ``bodyName`` 
 from __future__ import annotations
 
 import logging
-import time
 from typing import Any
 
 import numpy as np
 
 from workbench.sim.gazebo_ros_plugins.links import find_link, link_state, noise_seed, vector
 from workbench.sim.gazebo_ros_plugins.ros_context import PluginRos, ros_stamp
+from workbench.sim.listener_count import ListenerCount
 from workbench.sim.plugins import ModelPlugin, PluginSetupError, SdfElement, UpdateInfo
 
 _LOG = logging.getLogger("workbench.sim.gazebo_ros_plugins")
@@ -80,7 +80,7 @@ class GazeboRosP3D(ModelPlugin):
         self.last_time = model.sim_time
         #: The last message, or None.
         self.latest_message: Any = None
-        self._counted = (-1e9, 0)
+        self._listeners = ListenerCount()
         self.publisher = None
         if node is not None and topic:
             self.publisher = node.create_publisher(
@@ -88,14 +88,7 @@ class GazeboRosP3D(ModelPlugin):
             )
 
     def active(self) -> bool:
-        if self.publisher is None:
-            return True
-        now = time.monotonic()
-        checked, count = self._counted
-        if now - checked >= 0.2:
-            count = self.publisher.get_num_connections()
-            self._counted = (now, count)
-        return count > 0
+        return self.publisher is None or self._listeners(self.publisher) > 0
 
     def update(self, info: UpdateInfo) -> None:
         if info.sim_time == self.last_time:

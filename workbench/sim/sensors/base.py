@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-import time
 import zlib
 from typing import Any
 
 from workbench.errors import SimulationError
+from workbench.sim.listener_count import ListenerCount
 from workbench.sim.plugins import PluginSetupError, SdfElement, SensorPlugin
 from workbench.sim.sensors.spec import SensorSpec, parse_sensor
 
@@ -45,7 +45,8 @@ class RosSensorPlugin(SensorPlugin):
         self.sdf = sdf
         self.seed = zlib.crc32(f"{model.name}::{link}::{spec.name}".encode())
         self.update_rate = spec.update_rate
-        self._counts: dict[str, tuple[float, int]] = {}
+        #: Subscribers of a publisher's topic, looked up at most 5 times a wall second.
+        self.listeners = ListenerCount()
         self.setup(sdf)
 
     def setup(self, sdf: SdfElement) -> None:
@@ -63,17 +64,6 @@ class RosSensorPlugin(SensorPlugin):
         plant = world.plant
         X_WL = plant.EvalBodyPoseInWorld(plant.GetMyContextFromRoot(world.context), body)
         return X_WL.multiply(self.spec.pose()), body
-
-    def listeners(self, publisher: Any) -> int:
-        """Subscribers of ``publisher``'s topic, looked up at most 5 times a wall second."""
-        if publisher is None:
-            return 0
-        now = time.monotonic()
-        checked, count = self._counts.get(publisher.topic, (-1e9, 0))
-        if now - checked >= 0.2:
-            count = publisher.get_num_connections()
-            self._counts[publisher.topic] = (now, count)
-        return count
 
 
 def parameter(sdf: SdfElement, key: str, default: str) -> str:
