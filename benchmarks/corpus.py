@@ -11,7 +11,8 @@ Each file runs the workbench command of its kind (see :mod:`corpus_files`):
 headless), ``check`` of a Gazebo model, ``setup --srdf --dry-run``, ``map show``,
 ``bag info`` and ``rviz -d``, each in a child process with a timeout, with
 ``ROS_PACKAGE_PATH`` the root, ``GAZEBO_MODEL_PATH`` the model folders and
-``TURTLEBOT3_MODEL=burger``, from a scratch folder. ROS's own tools decide what
+``TURTLEBOT3_MODEL=burger``, from a scratch folder, with a fresh workbench cache
+(``--cache DIR`` reuses one). ROS's own tools decide what
 ROS accepts where they are installed (Debian's python3-roslaunch, urdfdom's
 check_urdf and urdf_to_graphviz, libsdformat, python3-rosbag; see
 :mod:`corpus_oracles`). Each command ends in one class:
@@ -221,6 +222,11 @@ def parse_args(argv: Sequence[str] | None) -> argparse.Namespace:
     )
     parser.add_argument("--jobs", type=int, default=2, help="parallel files (1 or 2)")
     parser.add_argument("--sample-models", type=int, help="check at most N Gazebo models")
+    parser.add_argument(
+        "--cache",
+        type=Path,
+        help="workbench's cache folder (default: a fresh one, as a new user has)",
+    )
     args = parser.parse_args(argv)
     if args.only:
         args.only = [k.strip() for k in args.only.split(",") if k.strip()]
@@ -257,6 +263,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             sdf_check=build_sdf_check(work) if kinds & {"world", "model"} else None,
             rosbag=ros_python is not None and have_python_module(ROS_PYTHON, "rosbag"),
             oracle_packages=oracle_packages(root, work),
+            cache=args.cache or work / "cache",
         )
         items = sample(discover(root, models, args.only), "model", args.sample_models)
         start = time.perf_counter()
@@ -286,7 +293,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     print(f"oracles: {'; '.join(f'{k}: {v}' for k, v in oracles.items())}")
     print(
         f"{len(items)} files, {len(results)} commands in {wall:.0f} s on {args.jobs} workers; "
-        f"timeout {args.timeout:.0f} s (a hang is retried once with twice as long)\n"
+        f"timeout {args.timeout:.0f} s (a hang is retried once with twice as long); "
+        f"workbench cache: {args.cache or 'fresh'}\n"
     )
     rows = summarize(results)
     print_table(rows)
@@ -300,6 +308,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         "models": [str(m) for m in models],
         "timeout_s": args.timeout,
         "sample_models": args.sample_models,
+        "cache": str(args.cache) if args.cache else "fresh",
         "oracles": oracles,
         "wall_s": round(wall, 1),
         "rows": rows,

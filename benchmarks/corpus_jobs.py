@@ -102,6 +102,8 @@ class Context:
             workbench ships that stand in for ones installed with ROS (gazebo_ros, xacro).
         retry_hangs: Run a command that timed out once more with twice the time
             before calling it hung (a loaded machine is slow, not stuck).
+        cache: workbench's cache folder (``WORKBENCH_CACHE_DIR``); None keeps the user's.
+            A fresh one shows what a new user sees: meshes converted on first use.
     """
 
     root: Path
@@ -118,6 +120,7 @@ class Context:
     rosbag: bool = False
     oracle_packages: list[Path] = field(default_factory=list)
     retry_hangs: bool = True
+    cache: Path | None = None
     _counter: itertools.count = field(default_factory=itertools.count, repr=False)
     _lock: threading.Lock = field(default_factory=threading.Lock, repr=False)
 
@@ -135,6 +138,8 @@ class Context:
         env["GAZEBO_MODEL_PATH"] = os.pathsep.join(map(str, self.models))
         env.setdefault("TURTLEBOT3_MODEL", "burger")
         env["WORKBENCH_MASTER_URI"] = "inproc"  # never join a core another program runs
+        if self.cache is not None:
+            env["WORKBENCH_CACHE_DIR"] = str(self.cache)
         if oracle:  # Debian's Python must not see workbench's checkout or virtual env
             env.pop("PYTHONPATH", None)
             env.pop("VIRTUAL_ENV", None)

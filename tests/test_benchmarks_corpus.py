@@ -606,3 +606,23 @@ def test_the_script_prints_the_table_and_writes_json(corpus, tree, tmp_path, cap
         100.0,
     )
     assert payload["results"][0]["file"].endswith("maps/map.yaml")
+
+
+def test_commands_see_the_packages_the_models_and_their_own_cache(corpus, tree, tmp_path) -> None:  # type: ignore[no-untyped-def]
+    root, models = tree
+    package(root, "gazebo_ros")  # the user's own copy shadows workbench's stand-in
+    work = tmp_path / "work"
+    work.mkdir()
+    shim = corpus["main"].oracle_packages(root, work)
+    linked = {path.name for folder in shim for path in folder.iterdir()}
+    assert "xacro" in linked and "gazebo_ros" not in linked
+    ctx = corpus["jobs"].Context(
+        root=root, models=[models], work=work, timeout=1.0, oracle_packages=shim, cache=work / "c"
+    )
+    ours, ros = ctx.env(), ctx.env(oracle=True)
+    assert ours["ROS_PACKAGE_PATH"] == str(root)
+    assert ros["ROS_PACKAGE_PATH"] == os.pathsep.join([str(root), str(shim[0])])
+    assert ours["GAZEBO_MODEL_PATH"] == ros["GAZEBO_MODEL_PATH"] == str(models)
+    assert ours["WORKBENCH_MASTER_URI"] == "inproc"
+    assert ours["WORKBENCH_CACHE_DIR"] == str(work / "c")
+    assert "PYTHONPATH" not in ros
