@@ -1,6 +1,8 @@
 """Make mesh files readable by Drake: OBJ/glTF pass through, STL/DAE/PLY become OBJ.
 
-Converted meshes go to a cache directory (``$WORKBENCH_CACHE_DIR``, else
+A COLLADA file's ``<unit meter="...">`` scales its vertices into metres, as
+Gazebo and RViz read it (a mesh drawn in inches has ``meter="0.0254"``); its
+``<up_axis>`` is ignored, as Gazebo ignores it. Converted meshes go to a cache directory (``$WORKBENCH_CACHE_DIR``, else
 ``$XDG_CACHE_HOME/workbench/meshes``, else ``~/.cache/workbench/meshes``),
 keyed by the source path, size and modification time, so a mesh is converted
 once.
@@ -9,6 +11,8 @@ once.
 from __future__ import annotations
 
 import hashlib
+import logging
+import math
 import os
 from pathlib import Path
 from typing import Any
@@ -59,6 +63,19 @@ def check_mesh(path: Path, *, where: Path | None = None, line: int | None = None
         raise MeshError(message, path=where, line=line, hint=error.hint) from None
 
 
+def unit_scale(mesh: Any) -> float:
+    """Metres per unit of a mesh trimesh read (COLLADA's ``<unit meter>``; 1 when unknown)."""
+    units = str(getattr(mesh, "units", None) or mesh.metadata.get("units", "") or "")
+    factor, _, unit = units.partition("*")
+    if unit.strip() != "meters":
+        return 1.0
+    try:
+        value = float(factor)
+    except ValueError:
+        return 1.0
+    return value if math.isfinite(value) and value > 0 else 1.0
+
+
 def prepare_mesh(path: Path, *, where: Path | None = None, line: int | None = None) -> Path:
     """Return a path Drake can read for the mesh at ``path``, converting if needed.
 
@@ -70,16 +87,29 @@ def prepare_mesh(path: Path, *, where: Path | None = None, line: int | None = No
     if suffix in NATIVE_FORMATS:
         return path.resolve()
     stat = path.stat()
-    key = hashlib.sha1(f"{path.resolve()}|{stat.st_size}|{stat.st_mtime_ns}".encode()).hexdigest()
+    # "units": meshes converted before COLLADA units were applied are not reused
+    key = f"{path.resolve()}|{stat.st_size}|{stat.st_mtime_ns}|units"
+    key = hashlib.sha1(key.encode()).hexdigest()
     target = cache_dir() / f"{path.stem}-{key[:16]}.obj"
     if target.is_file():
         return target
     try:
         import trimesh
 
-        mesh: Any = trimesh.load(str(path), force="mesh")  # a Trimesh with force="mesh"
+        # trimesh logs a traceback for every texture a COLLADA file names and lacks; the
+        # geometry is all that is converted
+        trimesh_log = logging.getLogger("trimesh")
+        level = trimesh_log.level
+        trimesh_log.setLevel(logging.CRITICAL)
+        try:
+            mesh: Any = trimesh.load(str(path), force="mesh")  # a Trimesh with force="mesh"
+        finally:
+            trimesh_log.setLevel(level)
         if len(mesh.faces) == 0:
             raise ValueError("the mesh has no triangles")
+        scale = unit_scale(mesh)
+        if scale != 1.0:
+            mesh.apply_scale(scale)
         target.parent.mkdir(parents=True, exist_ok=True)
         partial = target.with_suffix(f".{os.getpid()}.tmp")
         mesh.export(str(partial), file_type="obj")

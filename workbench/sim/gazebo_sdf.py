@@ -5,8 +5,10 @@ The model gets its world name; its own ``<pose>`` is lifted into
 spawner does); ``<static>`` and ``<self_collide>`` become fields (the simulator
 welds a static model where it is put); ``<gravity>false</gravity>`` on every
 link switches gravity off for the model; ``<plugin>`` and ``<sensor>`` elements
-are lifted out; ``model://NAME/...`` and relative mesh URIs become absolute
-files Drake can read. Drake reads the rest of SDFormat itself, including
+are lifted out; ``<include>`` and nested ``<model>`` elements are merged into
+the model (:mod:`workbench.model.sdf_nesting`, names as Gazebo gives them);
+``model://NAME/...`` and relative mesh URIs become files Drake can read
+(:mod:`workbench.model.sdf_uris`); stock Gazebo material scripts become colours. Drake reads the rest of SDFormat itself, including
 ``<surface><friction><ode><mu>``. Inertias that break the triangle inequality
 are fixed with a warning, as in URDF (:mod:`workbench.sim.inertia`).
 """
@@ -20,9 +22,12 @@ from typing import Any
 import numpy as np
 from lxml import etree
 
-from workbench.errors import SimulationError
+from workbench.errors import ModelError, SimulationError
+from workbench.model.sdf_names import drake_name, shown_name
+from workbench.model.sdf_nesting import drake_names, flatten_model
+from workbench.model.sdf_uris import resolve_mesh_uris
 from workbench.sim.inertia import ENTRIES, repaired
-from workbench.sim.model_spec import SimModel, element_text, plugin_spec
+from workbench.sim.model_spec import CollisionPieces, SimModel, element_text, plugin_spec
 
 DRAKE_NS = "http://drake.mit.edu"
 
@@ -33,8 +38,8 @@ def sim_model_from_sdf(
     """The :class:`SimModel` of an SDF file with one ``<model>`` (or a bare ``<model>``).
 
     Raises:
-        SimulationError: Not XML, no ``<model>``, a model without links, a nested
-            ``<include>``, a mesh that cannot be found.
+        SimulationError: Not XML, no ``<model>``, a model without links, an include that
+            cannot be resolved, a mesh that cannot be found.
     """
     try:
         root = etree.fromstring(text.strip().encode())
@@ -60,23 +65,27 @@ def sim_model_from_element(
 ) -> SimModel:
     """:func:`sim_model_from_sdf` for a parsed ``<model>`` element (changed in place)."""
     where = f"{source}:{model_element.sourceline}" if model_element.sourceline else source
+    path = Path(source) if base_dir is not None and Path(source).is_file() else None
+    try:
+        nesting = flatten_model(model_element, path=path, version=version)
+    except ModelError as error:
+        raise SimulationError(
+            error.message, path=error.path or path, line=error.line, hint=error.hint
+        ) from None
     links = model_element.findall("link")
     if not links:
         raise SimulationError(f"{where}: model '{model_element.get('name')}' has no <link>")
-    if model_element.find("include") is not None or model_element.find("model") is not None:
-        raise SimulationError(
-            f"{where}: nested models (<include>/<model> inside a <model>) are not supported",
-            hint="put the models side by side in the world",
-        )
     if name:
         model_element.set("name", name)
+    canonical = model_element.get("canonical_link") or links[0].get("name", "")
     model = SimModel(
         name=model_element.get("name", ""),
         format="sdf",
         text="",
-        root_link=model_element.get("canonical_link") or links[0].get("name"),
+        root_link=drake_name(canonical),
         source=source,
     )
+    model.warnings.extend(nesting.warnings)
     pose = model_element.find("pose")
     if pose is not None:
         model.pose = _pose(pose, where)
@@ -91,19 +100,20 @@ def sim_model_from_element(
         model_element.remove(plugin)
     gravity_off = []
     for link in links:
+        link_name = link.get("name", "")
         for sensor in link.findall("sensor"):
             for plugin in sensor.iter("plugin"):
                 model.plugins.append(
-                    plugin_spec(plugin, "sensor", link.get("name"), base_dir, source, sensor=sensor)
+                    plugin_spec(plugin, "sensor", shown_name(link_name), base_dir, source, sensor=sensor)
                 )
-            model.sensors.append((link.get("name", ""), element_text(sensor)))
+            model.sensors.append((shown_name(link_name), element_text(sensor)))
             link.remove(sensor)
         gravity = link.find("gravity")
         if gravity is not None:
             if not _truth(gravity.text):
-                gravity_off.append(link.get("name"))
+                gravity_off.append(link_name)
             link.remove(gravity)
-        if not model.static:
+        if not nesting.static_links.get(link_name, model.static):
             _fix_inertia(link, model, where)
     if gravity_off and len(gravity_off) == len(links):
         model.gravity = False
@@ -112,12 +122,94 @@ def sim_model_from_element(
             f"{where}: <gravity>false</gravity> on links {', '.join(gravity_off)} only; "
             "workbench switches gravity per model, so it stays on"
         )
+    model.static_links = {
+        drake_name(link): static
+        for link, static in nesting.static_links.items()
+        if static != model.static
+    }
     _ball_casters(model_element, model, where)
-    _absolute_uris(model_element, base_dir, where)
+    try:
+        resolve_mesh_uris(model_element, base_dir, path)
+    except ModelError as error:
+        raise SimulationError(
+            error.message, path=error.path or path, line=error.line, hint=error.hint
+        ) from None
+    _material_colours(model_element)
+    for link in links:
+        if nesting.static_links.get(link.get("name", ""), model.static):
+            _split_concave_meshes(link, model, where)
+    drake_names(model_element)
     sdf = etree.Element("sdf", version=version or "1.7")
     sdf.append(model_element)
     model.text = etree.tostring(sdf, encoding="unicode")
     return model
+
+
+def _split_concave_meshes(link: Any, model: SimModel, where: str) -> None:
+    """Take the concave collision meshes of a static link out of the SDF as convex pieces."""
+    from urllib.parse import unquote, urlparse
+
+    from workbench.model.mesh_pieces import convex_pieces
+
+    for collision in link.findall("collision"):
+        mesh = collision.find("geometry/mesh")
+        uri = (mesh.findtext("uri") or "").strip() if mesh is not None else ""
+        pose = collision.find("pose")
+        if (
+            not uri.startswith("file://")
+            or mesh.find("submesh") is not None
+            or (pose is not None and pose.get("relative_to") not in (None, ""))
+        ):
+            continue
+        scale = _vector(mesh.find("scale"), (1.0, 1.0, 1.0))
+        try:
+            pieces = convex_pieces(Path(unquote(urlparse(uri).path)), np.array(scale))
+        except Exception:  # trimesh cannot read it again: Drake keeps its hull
+            continue
+        if pieces is None:
+            continue
+        mu = [
+            value
+            for value in (
+                _vector(collision.find(f"surface/friction/ode/{key}"), (), count=1)
+                for key in ("mu", "mu2")
+            )
+            if value
+        ]
+        model.collision_pieces.append(
+            CollisionPieces(
+                link=drake_name(link.get("name", "")),
+                name=collision.get("name", "collision"),
+                pose=_pose(pose, where) if pose is not None else (0.0,) * 6,
+                pieces=tuple(pieces),
+                friction=float(np.mean([m[0] for m in mu])) if mu else 1.0,
+            )
+        )
+        link.remove(collision)
+
+
+def _vector(element: Any, default: tuple[float, ...], count: int = 3) -> tuple[float, ...]:
+    """The numbers of ``element``, ``default`` when it is missing or not ``count`` finite numbers."""
+    if element is None:
+        return default
+    try:
+        values = tuple(float(v) for v in (element.text or "").split())
+    except ValueError:
+        return default
+    ok = len(values) == count and all(np.isfinite(values)) and min(map(abs, values)) > 0
+    return values if ok else default
+
+
+def _material_colours(model_element: Any) -> None:
+    """Give visuals that name one of Gazebo's stock material scripts its colour (Drake reads
+    ``<diffuse>``, not scripts)."""
+    from workbench.sim.gazebo_urdf import GAZEBO_COLOURS
+
+    for material in model_element.iter("material"):
+        script_name = (material.findtext("script/name") or "").strip()
+        rgba = GAZEBO_COLOURS.get(script_name)
+        if rgba is not None and material.find("diffuse") is None:
+            etree.SubElement(material, "diffuse").text = " ".join(f"{c:g}" for c in rgba)
 
 
 def _ball_casters(model_element: Any, model: SimModel, where: str) -> None:
@@ -157,37 +249,9 @@ def _ball_casters(model_element: Any, model: SimModel, where: str) -> None:
             for key in ("mu_dynamic", "mu_static"):
                 etree.SubElement(properties, f"{{{DRAKE_NS}}}{key}").text = "0"
         model.warnings.append(
-            f"{where}: ball joint '{joint.get('name')}' carries a sphere caster: simulated as a "
+            f"{where}: ball joint '{shown_name(joint.get('name', ''))}' carries a sphere caster: simulated as a "
             "fixed, frictionless caster (Drake's ball joint stops at pitch = pi/2)"
         )
-
-
-def _absolute_uris(model_element: Any, base_dir: Path | None, where: str) -> None:
-    from workbench.model.meshes import prepare_mesh
-    from workbench.sim.model_paths import find_model_dir
-
-    for uri in model_element.iter("uri"):
-        value = (uri.text or "").strip()
-        if not value or value.startswith("package://"):
-            continue
-        if value.startswith("model://"):
-            model_name, _, rest = value[len("model://") :].partition("/")
-            folder = find_model_dir(model_name)
-            if folder is None:
-                raise SimulationError(
-                    f"{where}: cannot resolve {value}: no model '{model_name}'",
-                    hint="add its folder's parent to GAZEBO_MODEL_PATH",
-                )
-            path = folder / rest
-        elif value.startswith("file://"):
-            path = Path(value[len("file://") :])
-        else:
-            path = Path(value)
-            if not path.is_absolute():
-                path = (base_dir or Path.cwd()) / path
-        if uri.getparent() is not None and uri.getparent().tag == "mesh":
-            path = prepare_mesh(path, where=None, line=uri.sourceline)
-        uri.text = str(path)
 
 
 def _fix_inertia(link: Any, model: SimModel, where: str) -> None:

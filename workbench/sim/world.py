@@ -589,17 +589,25 @@ class World:
         self._require_built("body")
         plant = self.plant
         if "::" in scoped_name:
-            model, _, link = scoped_name.rpartition("::")
+            from workbench.model.sdf_names import drake_body
+
+            # the longest model name that starts it: links of nested models are A::B::link
+            owners = [m for m in self.model_names() if scoped_name.startswith(f"{m}::")]
+            model = max(owners, key=len) if owners else scoped_name.partition("::")[0]
+            link = scoped_name[len(model) + 2 :]
             instance = self.model_instance(model)
-            if not plant.HasBodyNamed(link, instance):
+            found = drake_body(plant, link, instance)
+            if found is None:
                 raise SimulationError(f"model '{model}' has no link '{link}'")
-            return plant.GetBodyByName(link, instance)
+            return plant.GetBodyByName(found, instance)
         from pydrake.multibody.tree import BodyIndex
+
+        from workbench.model.sdf_names import shown_name
 
         matches = [
             plant.get_body(BodyIndex(index))
             for index in range(1, plant.num_bodies())
-            if plant.get_body(BodyIndex(index)).name() == scoped_name
+            if shown_name(plant.get_body(BodyIndex(index)).name()) == scoped_name
         ]
         if len(matches) != 1:
             raise SimulationError(
@@ -712,13 +720,15 @@ class World:
         self._require_built("link_states")
         plant = self.plant
         plant_context = plant.GetMyContextFromRoot(self.context)
+        from workbench.model.sdf_names import scoped
+
         states = []
         for name in [*self._robots, *self._models]:
             for index in plant.GetBodyIndices(self.model_instance(name)):
                 body = plant.get_body(index)
                 states.append(
                     (
-                        f"{name}::{body.name()}",
+                        scoped(name, body.name()),
                         plant.EvalBodyPoseInWorld(plant_context, body),
                         plant.EvalBodySpatialVelocityInWorld(plant_context, body),
                     )
@@ -823,15 +833,18 @@ class World:
 
     def joint(self, model: str, joint_name: str) -> Any:
         """A joint of a model by name."""
+        from workbench.model.sdf_names import drake_joint
+
         instance = self.model_instance(model)
-        if not self.plant.HasJointNamed(joint_name, instance):
+        found = drake_joint(self.plant, joint_name, instance)
+        if found is None:
             from workbench.sim.scene import joint_names
 
             raise SimulationError(
                 f"model '{model}' has no joint '{joint_name}'",
                 hint="joints: " + (", ".join(joint_names(self.plant, instance)) or "none"),
             )
-        return self.plant.GetJointByName(joint_name, instance)
+        return self.plant.GetJointByName(found, instance)
 
     def reset(self, *, time: bool = True) -> None:
         """Every model back to where it was spawned, at rest (``time``: the clock to 0 too)."""
@@ -1088,7 +1101,9 @@ class World:
         body = self.plant.GetBodyFromFrameId(inspector.GetFrameId(geometry_id))
         if body is None or body.index() == self.plant.world_body().index():
             return inspector.GetName(geometry_id)
-        return body.name()
+        from workbench.model.sdf_names import shown_name
+
+        return shown_name(body.name())
 
     def _entry(self, robot_name: str) -> _RobotEntry:
         if robot_name not in self._robots:

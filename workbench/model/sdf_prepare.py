@@ -1,0 +1,60 @@
+"""An SDF model file made ready for Drake's parser, as the simulator reads it.
+
+Drake is given the model as text: its includes expanded and nested models
+merged (:mod:`workbench.model.sdf_nesting`), its ``model://`` and relative mesh
+URIs resolved and converted (:mod:`workbench.model.sdf_uris`), and its names
+written as Drake takes them (:mod:`workbench.model.sdf_names`). Blank lines
+stand in for the prolog, so Drake's line numbers are the file's wherever
+nothing was merged. ``workbench check`` and ``load_robot`` read SDF models
+this way, resolving ``model://`` exactly as ``workbench sim`` does.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from lxml import etree
+
+from workbench.errors import ModelError
+from workbench.model.limits import xml_error_text
+
+
+@dataclass
+class PreparedSdf:
+    """The text Drake parses and what was changed on the way.
+
+    Attributes:
+        text: The SDF document with one flattened ``<model>``.
+        warnings: One line per name changed so Drake accepts it.
+    """
+
+    text: str
+    warnings: list[str] = field(default_factory=list)
+
+
+def prepare_sdf(text: str, path: Path) -> PreparedSdf | None:
+    """The prepared text of the SDF file ``path`` (holding ``text``), or None when it holds no
+    ``<model>`` at its top (a world, a light: Drake reads those itself).
+
+    Raises:
+        ModelError: Not XML; an include, a mesh or a ``model://`` URI that cannot be resolved.
+    """
+    from workbench.model.sdf_nesting import drake_names, flatten_model
+    from workbench.model.sdf_uris import resolve_mesh_uris
+
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=True)
+    try:
+        root = etree.fromstring(text.encode(), parser)
+    except etree.XMLSyntaxError as error:
+        raise ModelError(
+            f"not well-formed XML: {xml_error_text(str(error.msg))}", path=path, line=error.lineno
+        ) from None
+    model = root.find("model") if root.tag == "sdf" else None
+    if model is None:
+        return None
+    nesting = flatten_model(model, path=path, version=root.get("version"))
+    resolve_mesh_uris(model, path.parent, path)
+    drake_names(model)
+    padding = "\n" * ((root.sourceline or 1) - 1)
+    return PreparedSdf(padding + etree.tostring(root, encoding="unicode"), nesting.warnings)
