@@ -244,7 +244,6 @@ def check_robot(source: str | os.PathLike[str], *, load: bool = True) -> CheckRe
 
 def _check_sdf(description: RobotDescription) -> CheckReport:
     from workbench.model.loader import load_robot
-
     from workbench.model.sdf_names import shown_name
 
     path = description.path

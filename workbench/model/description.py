@@ -34,8 +34,8 @@ from workbench.model.urdf_xml import UrdfDocument, parse_urdf_text
 
 if TYPE_CHECKING:
     from workbench.model.info import JointInfo
-    from workbench.model.sdf_prepare import PreparedSdf
     from workbench.model.robot import Robot
+    from workbench.model.sdf_prepare import PreparedSdf
 
 
 @dataclass(eq=False)

@@ -100,12 +100,16 @@ def resolve_model_uri(uri: str) -> Path:
             return candidate
     model = relative.split("/")[0]
     known = any((folder / model).is_dir() for folder in folders)
-    what = f"model folder '{model}' has no {relative.partition('/')[2]}" if known else (
-        f"no model folder '{model}'"
+    what = (
+        f"model folder '{model}' has no {relative.partition('/')[2]}"
+        if known
+        else (f"no model folder '{model}'")
     )
     raise ModelUriError(
         f"cannot resolve {uri}: {what}",
-        hint="looked in " + ", ".join(str(f) for f in folders) + "; add folders to GAZEBO_MODEL_PATH",
+        hint="looked in "
+        + ", ".join(str(f) for f in folders)
+        + "; add folders to GAZEBO_MODEL_PATH",
     )
 
 

@@ -250,7 +250,9 @@ def load_robot(
         document=document,
         description=description,
     )
-    robot.load_warnings = warnings if document is not None or sdf is None else sdf.warnings + warnings
+    robot.load_warnings = (
+        warnings if document is not None or sdf is None else sdf.warnings + warnings
+    )
     if finalize:
         try:
             robot.finalize()

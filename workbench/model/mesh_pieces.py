@@ -81,5 +81,7 @@ def convex_pieces(path: Path, scale: np.ndarray) -> list[np.ndarray] | None:
     outward = np.zeros_like(inward) if closed else -inward / 2.0
     if not closed:
         inward = inward / 2.0
-    pieces = np.stack([a + outward, b + outward, c + outward, a + inward, b + inward, c + inward], 1)
+    pieces = np.stack(
+        [a + outward, b + outward, c + outward, a + inward, b + inward, c + inward], 1
+    )
     return list(pieces)

@@ -39,6 +39,8 @@ MAX_INCLUDE_DEPTH = 16
 _FRAMES = ("link", "joint", "frame")
 #: Attributes that refer to a frame by name.
 _REFERENCES = ("relative_to", "attached_to", "expressed_in", "canonical_link")
+#: Marks an axis given in its model's frame while files of several versions are merged.
+_IN_MODEL = "__in_model__"
 #: Elements of a nested model that belong to it alone and are dropped when it is merged.
 _DROPPED = ("pose", "static", "self_collide", "allow_auto_disable", "enable_wind", "name")
 
@@ -52,11 +54,14 @@ class Nesting:
             whether their model is static (their roots are welded or free by it).
         warnings: One line per name that was changed so Drake accepts it.
         files: Files that were included, in the order they were read.
+        version: The newest SDFormat version among the files: the flattened model is
+            written in it (axes and poses said the way it says them).
     """
 
     static_links: dict[str, bool] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
     files: list[Path] = field(default_factory=list)
+    version: str = "1.4"
 
 
 def flatten_model(
@@ -75,9 +80,11 @@ def flatten_model(
             a nested model with a pose relative to a named frame, too many links.
     """
     nesting = nesting if nesting is not None else Nesting()
+    _mark_axes(model, version, nesting)
     _expand_includes(model, path, version, nesting, (path,) if path else (), 0)
     _merge_nested(model, version, path, nesting)
     _mark_clashing_joints(model, version, path, nesting)
+    _write_for_version(model, nesting.version)
     links = len(model.findall("link"))
     if links > MAX_LINKS:
         raise ModelError(
@@ -164,11 +171,11 @@ def _included_model(
         )
     nesting.files.append(file)
     inner_version = root.get("version") or version
+    _mark_axes(inner, inner_version, nesting)
     _expand_includes(inner, file, inner_version, nesting, (*chain, file), depth + 1)
     _merge_nested(inner, inner_version, file, nesting)
     _mark_clashing_joints(inner, inner_version, file, nesting)
     resolve_mesh_uris(inner, file.parent, file)
-    _axes_in_model_frame(inner, inner_version, version)
     inner.set("__included__", "1")
     name = (include.findtext("name") or "").strip()
     if name:
@@ -224,7 +231,9 @@ def include_file(uri: str, path: Path | None, line: int | None) -> Path:
 
         return config_file(target)
     if not target.is_file():
-        raise ModelError(f"<include> of '{uri}': no such file or model folder", path=path, line=line)
+        raise ModelError(
+            f"<include> of '{uri}': no such file or model folder", path=path, line=line
+        )
     return target
 
 
@@ -319,9 +328,9 @@ def _compose_pose(element: Any, X_PM: np.ndarray, renamed: dict[str, str]) -> No
     """Give ``element`` (a link or frame of a nested model) its pose in the parent model."""
     pose = element.find("pose")
     relative_to = pose.get("relative_to") if pose is not None else None
-    if element.tag == "frame" and element.get("attached_to") not in (None, "", "__model__"):
-        if relative_to in (None, ""):
-            return  # relative to the frame it is attached to, which moves with it
+    attached = element.get("attached_to") not in (None, "", "__model__")
+    if element.tag == "frame" and attached and relative_to in (None, ""):
+        return  # relative to the frame it is attached to, which moves with it
     if relative_to not in (None, "", "__model__"):
         return  # relative to a frame of the nested model, renamed with it
     X_ML = _pose_of(element, where=f"{element.tag} '{element.get('name')}'")
@@ -336,10 +345,7 @@ def _compose_pose(element: Any, X_PM: np.ndarray, renamed: dict[str, str]) -> No
 def _rotate_model_axis(axis: Any, R_PM: np.ndarray) -> None:
     """Turn an axis given in the nested model's frame into the parent model's frame."""
     xyz = axis.find("xyz")
-    in_model = axis.findtext("use_parent_model_frame", "").strip().lower() in ("1", "true")
-    if xyz is not None and xyz.get("expressed_in") == "__model__":
-        in_model = True
-    if not in_model or xyz is None:
+    if axis.get(_IN_MODEL) != "1" or xyz is None:
         return
     try:
         vector = np.array([float(v) for v in (xyz.text or "").split()], dtype=float)
@@ -350,22 +356,45 @@ def _rotate_model_axis(axis: Any, R_PM: np.ndarray) -> None:
     xyz.text = " ".join(f"{v:.17g}" for v in R_PM @ vector)
 
 
-def _axes_in_model_frame(model: Any, inner: str | None, outer: str | None) -> None:
-    """Say explicitly that an axis of an SDFormat 1.4 file is in the model frame (1.5 made the
-    joint frame the default), in the way the including file's version writes it."""
-    old = _version(inner) < (1, 5)
-    modern = _version(outer) >= (1, 7)
+def _mark_axes(model: Any, version: str | None, nesting: Nesting) -> None:
+    """Note on each joint axis of one file whether it is given in the model frame (SDFormat
+    1.4 always, 1.5 and 1.6 with ``use_parent_model_frame``, 1.7 with ``expressed_in``),
+    so files of different versions can be merged; :func:`_write_for_version` writes it back."""
+    if _version(version) > _version(nesting.version):
+        nesting.version = version or "1.7"
     for axis in model.iter("axis", "axis2"):
+        if _inside_plugin(axis) or axis.get(_IN_MODEL) is not None:
+            continue
         flag = axis.find("use_parent_model_frame")
-        in_model = old if flag is None else _truth(flag.text)
+        xyz = axis.find("xyz")
+        expressed = xyz.get("expressed_in") if xyz is not None else None
+        if flag is not None:
+            in_model = _truth(flag.text)
+            axis.remove(flag)
+        else:
+            in_model = expressed == "__model__" or _version(version) < (1, 5)
+        if expressed == "__model__":
+            del xyz.attrib["expressed_in"]
+        axis.set(_IN_MODEL, "1" if in_model else "0")
+
+
+def _write_for_version(model: Any, version: str) -> None:
+    """Say model-frame axes (and pose frames) the way SDFormat ``version`` says them."""
+    modern = _version(version) >= (1, 7)
+    for axis in model.iter("axis", "axis2"):
+        in_model = axis.attrib.pop(_IN_MODEL, None) == "1"
+        xyz = axis.find("xyz")
+        if not in_model or xyz is None:
+            continue
         if modern:
-            if flag is not None:
-                axis.remove(flag)
-            xyz = axis.find("xyz")
-            if in_model and xyz is not None:
-                xyz.set("expressed_in", "__model__")
-        elif old and flag is None:
+            xyz.set("expressed_in", "__model__")
+        elif _version(version) >= (1, 5):
             etree.SubElement(axis, "use_parent_model_frame").text = "true"
+    if modern:
+        for pose in model.iter("pose"):
+            frame = pose.attrib.pop("frame", None)
+            if frame and pose.get("relative_to") is None:
+                pose.set("relative_to", frame)
 
 
 def _mark_clashing_joints(

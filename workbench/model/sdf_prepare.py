@@ -56,5 +56,6 @@ def prepare_sdf(text: str, path: Path) -> PreparedSdf | None:
     nesting = flatten_model(model, path=path, version=root.get("version"))
     resolve_mesh_uris(model, path.parent, path)
     drake_names(model)
+    root.set("version", nesting.version)
     padding = "\n" * ((root.sourceline or 1) - 1)
     return PreparedSdf(padding + etree.tostring(root, encoding="unicode"), nesting.warnings)

@@ -104,7 +104,9 @@ def sim_model_from_element(
         for sensor in link.findall("sensor"):
             for plugin in sensor.iter("plugin"):
                 model.plugins.append(
-                    plugin_spec(plugin, "sensor", shown_name(link_name), base_dir, source, sensor=sensor)
+                    plugin_spec(
+                        plugin, "sensor", shown_name(link_name), base_dir, source, sensor=sensor
+                    )
                 )
             model.sensors.append((shown_name(link_name), element_text(sensor)))
             link.remove(sensor)
@@ -139,7 +141,7 @@ def sim_model_from_element(
         if nesting.static_links.get(link.get("name", ""), model.static):
             _split_concave_meshes(link, model, where)
     drake_names(model_element)
-    sdf = etree.Element("sdf", version=version or "1.7")
+    sdf = etree.Element("sdf", version=nesting.version)
     sdf.append(model_element)
     model.text = etree.tostring(sdf, encoding="unicode")
     return model

@@ -1,5 +1,7 @@
 // Loads one SDFormat file with libsdformat (sdf::Root::Load) and prints, as one JSON
-// object, the errors it reports and the worlds, models, links and joints it sees.
+// object, the errors it reports and the worlds, models, links and joints it sees: each
+// model's pose in its parent (the world or the enclosing model), each link's pose in its
+// model, each joint's links, type and first axis in its model's frame.
 // model:// URIs are looked up in GAZEBO_MODEL_PATH, as Gazebo does.
 // Build: g++ sdformat_check.cc $(pkg-config --cflags --libs sdformat12) -o sdformat_check
 #include <cstdio>
@@ -42,6 +44,7 @@ std::string PoseJson(const ignition::math::Pose3d &pose) {
 // `pose` is the model's pose in `parent_frame` (empty: the pose the file gives it).
 std::string ModelJson(const sdf::Model &model, const std::string &parent_frame) {
   std::ostringstream out;
+  out.precision(17);
   ignition::math::Pose3d pose = model.RawPose();
   if (!parent_frame.empty()) {
     model.SemanticPose().Resolve(pose, parent_frame);
@@ -62,7 +65,15 @@ std::string ModelJson(const sdf::Model &model, const std::string &parent_frame) 
     out << (i ? "," : "") << "{\"name\":" << Quoted(joint->Name())
         << ",\"parent\":" << Quoted(joint->ParentLinkName())
         << ",\"child\":" << Quoted(joint->ChildLinkName())
-        << ",\"type\":" << static_cast<int>(joint->Type()) << '}';
+        << ",\"type\":" << static_cast<int>(joint->Type()) << ",\"axis\":";
+    const sdf::JointAxis *axis = joint->Axis(0);
+    ignition::math::Vector3d xyz;
+    if (axis != nullptr && axis->ResolveXyz(xyz, "__model__").empty()) {
+      out << '[' << xyz.X() << ',' << xyz.Y() << ',' << xyz.Z() << ']';
+    } else {
+      out << "null";
+    }
+    out << '}';
   }
   out << "],\"models\":[";
   for (uint64_t i = 0; i < model.ModelCount(); ++i) {
