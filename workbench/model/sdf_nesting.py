@@ -30,7 +30,7 @@ import numpy as np
 from lxml import etree
 
 from workbench.errors import ModelError
-from workbench.model.limits import MAX_LINKS, MAX_MODEL_BYTES, check_input_file, xml_error_text
+from workbench.model.limits import MAX_LINKS, MAX_MODEL_BYTES, check_input_file
 from workbench.model.sdf_names import JOINT_MARK, drake_name
 
 #: Deepest chain of models including models.
@@ -245,16 +245,11 @@ def read_sdf_file(file: Path) -> Any:
         ModelError: Too big, not a regular file, not XML, or a name or number Drake cannot take.
     """
     from workbench.model.drake_guard import check_sdf_file
+    from workbench.model.sdf_xml import read_sdf_text
 
     check_input_file(file, "model file", MAX_MODEL_BYTES)
     check_sdf_file(file)
-    parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=True)
-    try:
-        return etree.parse(str(file), parser).getroot()
-    except etree.XMLSyntaxError as error:
-        raise ModelError(
-            f"not well-formed XML: {xml_error_text(str(error.msg))}", path=file, line=error.lineno
-        ) from None
+    return read_sdf_text(file)
 
 
 # --- merging nested models ----------------------------------------------------------

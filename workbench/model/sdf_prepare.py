@@ -16,9 +16,6 @@ from pathlib import Path
 
 from lxml import etree
 
-from workbench.errors import ModelError
-from workbench.model.limits import xml_error_text
-
 
 @dataclass
 class PreparedSdf:
@@ -42,14 +39,9 @@ def prepare_sdf(text: str, path: Path) -> PreparedSdf | None:
     """
     from workbench.model.sdf_nesting import drake_names, flatten_model
     from workbench.model.sdf_uris import resolve_mesh_uris
+    from workbench.model.sdf_xml import parse_sdf_text
 
-    parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=True)
-    try:
-        root = etree.fromstring(text.encode(), parser)
-    except etree.XMLSyntaxError as error:
-        raise ModelError(
-            f"not well-formed XML: {xml_error_text(str(error.msg))}", path=path, line=error.lineno
-        ) from None
+    root = parse_sdf_text(text, path)
     model = root.find("model") if root.tag == "sdf" else None
     if model is None:
         return None

@@ -41,10 +41,12 @@ def sim_model_from_sdf(
         SimulationError: Not XML, no ``<model>``, a model without links, an include that
             cannot be resolved, a mesh that cannot be found.
     """
+    from workbench.model.sdf_xml import parse_sdf_text
+
     try:
-        root = etree.fromstring(text.strip().encode())
-    except etree.XMLSyntaxError as error:
-        raise SimulationError(f"{source}: not valid XML: {error}") from None
+        root = parse_sdf_text(text.strip())
+    except ModelError as error:
+        raise SimulationError(f"{source}: not valid XML: {error.message}") from None
     model_element = root if root.tag == "model" else root.find("model")
     if model_element is None:
         what = "a world, not a model" if root.find("world") is not None else "no <model>"

@@ -108,14 +108,14 @@ def load_world(name_or_path: str | os.PathLike[str]) -> WorldFile:
             naming the file and line.
     """
     path = find_world(name_or_path)
+    from workbench.model.sdf_xml import read_sdf_text
+
     try:
-        root = etree.parse(str(path)).getroot()
-    except etree.XMLSyntaxError as error:
-        raise SimulationError(
-            f"not an XML world file: {error.msg}", path=path, line=error.lineno
-        ) from None
-    except OSError as error:
-        raise SimulationError(f"cannot read the world file: {error.strerror}", path=path) from None
+        root = read_sdf_text(path)
+    except ModelError as error:
+        reason = error.message.removeprefix("not well-formed XML: ")
+        message = f"not an XML world file: {reason}" if reason != error.message else reason
+        raise SimulationError(message, path=path, line=error.line) from None
     world = root.find("world") if root.tag == "sdf" else (root if root.tag == "world" else None)
     if world is None:
         raise SimulationError(
