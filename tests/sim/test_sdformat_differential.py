@@ -283,6 +283,23 @@ def test_models_nested_inline_with_their_own_static_as_turtlebot3_house(
     }
 
 
+def test_xml_that_libsdformat_forgives_is_read_and_broken_xml_refused(sdformat_checker, tmp_path):
+    path = tmp_path / "pit.sdf"
+    path.write_text(
+        "\n<?xml version='1.0' ?>\n<sdf version='1.5'>\n<model name='pit'><static>true</static>\n"
+        "<!-- Mass computed using density of aluminum foil (2700Kg/m3)\n"
+        "<!-- divided by 4 because the door is probably not solid. -->\n"
+        + link("link")
+        + "</model></sdf>\n"
+    )
+    compare(sdformat_checker, path)
+    broken = tmp_path / "broken.sdf"
+    broken.write_text("<sdf version='1.5'><model name=m><link name='l'/></model></sdf>")
+    assert not run_oracle(sdformat_checker, broken).accepted
+    with pytest.raises(SimulationError, match="not valid XML"):
+        workbench_model(broken)
+
+
 # --- generated models -------------------------------------------------------------------
 
 

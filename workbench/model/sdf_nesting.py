@@ -149,6 +149,13 @@ def _included_model(
 
     line = include.sourceline
     uri = (include.findtext("uri") or "").strip()
+    if include.get("merge", "").strip().lower() in ("1", "true"):
+        raise ModelError(
+            f"<include merge='true'> of {uri} is not supported",
+            path=path,
+            line=line,
+            hint="include it without merge: its links are then named MODEL::LINK",
+        )
     file = include_file(uri, path, line)
     if depth + 1 > MAX_INCLUDE_DEPTH:
         raise ModelError(
