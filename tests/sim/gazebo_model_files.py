@@ -108,8 +108,11 @@ def write_dae(
     meter: float = 1.0,
     unit: str = "meter",
     up_axis: str = "Z_UP",
+    image_without_file: bool = False,
 ) -> Path:
-    """A COLLADA 1.4.1 file with one triangle mesh, in the given unit (vertices in that unit)."""
+    """A COLLADA 1.4.1 file with one triangle mesh, in the given unit (vertices in that unit);
+    ``image_without_file``: with an ``<image>`` that names no file, as 3ds Max's OpenCOLLADA
+    exporter writes (gazebo_models' arm_part)."""
     positions = " ".join(f"{v:.9g}" for v in vertices.ravel())
     indices = " ".join(str(i) for i in faces.ravel())
     text = f"""<?xml version="1.0" encoding="utf-8"?>
@@ -118,7 +121,7 @@ def write_dae(
     <contributor><authoring_tool>a test</authoring_tool></contributor>
     <unit name="{unit}" meter="{meter}"/>
     <up_axis>{up_axis}</up_axis>
-  </asset>
+  </asset>{{images}}
   <library_geometries>
     <geometry id="ID2" name="shape">
       <mesh>
@@ -148,6 +151,33 @@ def write_dae(
   <scene><instance_visual_scene url="#ID1"/></scene>
 </COLLADA>
 """
+    if image_without_file:  # a textured material whose image names no file
+        text = text.replace("{images}", _TEXTURED_MATERIAL)
+        text = text.replace("<triangles ", '<triangles material="paint" ')
+        text = text.replace(
+            '<instance_geometry url="#ID2"/>',
+            '<instance_geometry url="#ID2"><bind_material><technique_common>'
+            '<instance_material symbol="paint" target="#paint-material"/>'
+            "</technique_common></bind_material></instance_geometry>",
+        )
     path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(text)
+    path.write_text(text.replace("{images}", ""))
     return path
+
+
+_TEXTURED_MATERIAL = """
+  <library_effects>
+    <effect id="paint-effect"><profile_COMMON>
+      <newparam sid="tray-surface"><surface type="2D"><init_from>TrayParts_png</init_from></surface></newparam>
+      <newparam sid="tray-sampler"><sampler2D><source>tray-surface</source></sampler2D></newparam>
+      <technique sid="common"><blinn><diffuse><texture texture="tray-sampler" texcoord="CHANNEL1"/></diffuse></blinn></technique>
+    </profile_COMMON></effect>
+  </library_effects>
+  <library_materials>
+    <material id="paint-material" name="paint"><instance_effect url="#paint-effect"/></material>
+  </library_materials>
+  <library_images>
+    <image id="TrayParts_png">
+      <!--<init_from>trayParts.png</init_from>-->
+    </image>
+  </library_images>"""

@@ -155,7 +155,9 @@ def test_collada_units_scale_the_wall_and_the_concave_wall_becomes_prisms(walls_
         for g in inspector.GetAllGeometryIds(Role.kProximity)
     }
     wall = [shape for name, shape in shapes.items() if name.startswith("walls::wall_piece_")]
-    assert len(wall) == 32  # one prism per triangle of the ring
+    # each of the 8 upright faces is one prism; top and bottom (square rings, not convex)
+    # one prism per triangle
+    assert len(wall) == 8 + 2 * 8
     corners = np.array(
         [
             hull.vertex(i)
@@ -229,3 +231,42 @@ def test_a_missing_mesh_and_an_unknown_model_folder_are_one_line_errors(walls_wo
     sdf.write_text(sdf.read_text().replace("common_meshes/gone.obj", "no_such_folder/post.obj"))
     with pytest.raises(SimulationError, match="no model folder 'no_such_folder'"):
         build_server(ServerOptions(world=str(walls_world), view=False), Bus())
+
+
+def test_a_collada_file_with_an_image_that_names_no_file_is_read_as_gazebo_reads_it(tmp_path):
+    from workbench.model.mesh_pieces import load_triangles
+    from workbench.model.meshes import prepare_mesh
+
+    vertices, faces = prism(_square(100.0), 70.0)  # mm, as gazebo_models' arm_part
+    dae = write_dae(
+        tmp_path / "arm.dae", vertices, faces, meter=0.001, unit="millimeter", image_without_file=True
+    )
+    mesh = load_triangles(prepare_mesh(dae))
+    assert len(mesh.faces) == len(faces)
+    np.testing.assert_allclose(mesh.bounds, [[-0.1, -0.1, 0.0], [0.1, 0.1, 0.07]], atol=1e-9)
+
+
+def test_a_plane_collision_is_a_box_whose_top_is_the_plane(tmp_path, monkeypatch):
+    """turtlebot3_autorace's course: a static model whose collision is a <plane> 4 m wide."""
+    from sim_helpers import box_model
+
+    from workbench.sim import World
+    from workbench.sim.gazebo_sdf import sim_model_from_sdf
+    from workbench.sim.server import SERVER_PHYSICS, SimServer
+
+    plane = "<geometry><plane><normal>0 0 1</normal><size>4 4</size></plane></geometry>"
+    course = sim_model_from_sdf(
+        f"<sdf version='1.5'><model name='course'><static>1</static><pose>0 0 0.3 0 0 -3.14</pose>"
+        f"<link name='link'><collision name='collision'>{plane}</collision>"
+        f"<visual name='visual'><cast_shadows>false</cast_shadows>{plane}</visual></link></model></sdf>",
+        name=None,
+        source="course.sdf",
+    )
+    world = World(**SERVER_PHYSICS)
+    server = SimServer(world, real_time_factor=0)
+    server.spawn(course, [0.0, 0.0, 0.0])
+    server.spawn(box_model("crate", size=0.2), [1.0, 0.5, 0.45])
+    server.run(until=0.5)
+    z = world.get_model_pose("crate").translation()[2]
+    assert z == pytest.approx(0.4, abs=2e-3)  # resting on the plane at 0.3, not the ground
+    server.stop()

@@ -103,6 +103,8 @@ def prepare_mesh(path: Path, *, where: Path | None = None, line: int | None = No
         trimesh_log.setLevel(logging.CRITICAL)
         try:
             mesh: Any = trimesh.load(str(path), force="mesh")  # a Trimesh with force="mesh"
+            if len(mesh.faces) == 0 and suffix == ".dae":
+                mesh = _collada_geometry(path, trimesh)
         finally:
             trimesh_log.setLevel(level)
         if len(mesh.faces) == 0:
@@ -122,3 +124,24 @@ def prepare_mesh(path: Path, *, where: Path | None = None, line: int | None = No
             f"cannot convert mesh {path} to OBJ: {error}", path=where, line=line, hint=hint
         ) from None
     return target
+
+
+def _collada_geometry(path: Path, trimesh: Any) -> Any:
+    """A COLLADA file's triangles read without its images, materials and effects.
+
+    pycollada refuses a whole file over an image without a file path (3ds Max's
+    exporter writes them) and trimesh then reads no triangles; Gazebo draws the
+    geometry anyway.
+    """
+    import io
+
+    from lxml import etree
+
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=True)
+    root = etree.parse(str(path), parser).getroot()
+    for element in list(root.iter()):
+        name = etree.QName(element).localname if isinstance(element.tag, str) else ""
+        if name in ("library_images", "library_materials", "library_effects", "bind_material"):
+            element.getparent().remove(element)
+    data = io.BytesIO(etree.tostring(root))
+    return trimesh.load(data, file_type="dae", force="mesh")

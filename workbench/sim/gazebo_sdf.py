@@ -140,6 +140,8 @@ def sim_model_from_element(
         ) from None
     _material_colours(model_element)
     for link in links:
+        _planes_as_boxes(link, where)
+    for link in links:
         if nesting.static_links.get(link.get("name", ""), model.static):
             _split_concave_meshes(link, model, where)
     drake_names(model_element)
@@ -153,7 +155,7 @@ def _split_concave_meshes(link: Any, model: SimModel, where: str) -> None:
     """Take the concave collision meshes of a static link out of the SDF as convex pieces."""
     from urllib.parse import unquote, urlparse
 
-    from workbench.model.mesh_pieces import convex_pieces
+    from workbench.model.mesh_pieces import TooManyPieces, convex_pieces
 
     for collision in link.findall("collision"):
         mesh = collision.find("geometry/mesh")
@@ -168,6 +170,13 @@ def _split_concave_meshes(link: Any, model: SimModel, where: str) -> None:
         scale = _vector(mesh.find("scale"), (1.0, 1.0, 1.0))
         try:
             pieces = convex_pieces(Path(unquote(urlparse(uri).path)), np.array(scale))
+        except TooManyPieces as error:
+            model.warnings.append(
+                f"{where}: collision '{collision.get('name')}' of link "
+                f"'{shown_name(link.get('name', ''))}' is a concave mesh with {error}; it "
+                "collides, and the laser sees it, as its convex hull"
+            )
+            continue
         except Exception:  # trimesh cannot read it again: Drake keeps its hull
             continue
         if pieces is None:
@@ -190,6 +199,58 @@ def _split_concave_meshes(link: Any, model: SimModel, where: str) -> None:
             )
         )
         link.remove(collision)
+
+
+#: The side of the box a collision ``<plane>`` becomes, and its thickness below the plane, m.
+PLANE_SIDE, PLANE_THICKNESS = 200.0, 1.0
+
+
+def _planes_as_boxes(link: Any, where: str) -> None:
+    """Give ``<plane>`` shapes as boxes whose top face is the plane.
+
+    Gazebo's plane collides as an infinite plane; Drake 1.51 crashes (in its broad
+    phase) once a second half space, beside the ground's, shares a plant with a few
+    hundred shapes. A box :data:`PLANE_SIDE` wide and :data:`PLANE_THICKNESS` deep
+    under the plane collides the same wherever a robot drives; a visual plane
+    becomes a thin box of the plane's ``<size>``.
+    """
+    from workbench.spatial import pose_matrix, xyz_rpy_from_matrix
+
+    for element in [*link.findall("collision"), *link.findall("visual")]:
+        geometry = element.find("geometry")
+        plane = geometry.find("plane") if geometry is not None else None
+        if plane is None:
+            continue
+        normal = np.array(_vector(plane.find("normal"), (0.0, 0.0, 1.0)), dtype=float)
+        normal = normal / np.linalg.norm(normal) if np.linalg.norm(normal) > 0 else np.eye(3)[2]
+        if element.tag == "collision":
+            size = (PLANE_SIDE, PLANE_SIDE, PLANE_THICKNESS)
+        else:
+            drawn = _vector(plane.find("size"), (PLANE_SIDE, PLANE_SIDE), count=2)
+            size = (drawn[0], drawn[1], 0.001)
+        # a rotation taking z to the normal, then the box moved half its depth under the plane
+        axis = np.cross([0.0, 0.0, 1.0], normal)
+        angle = float(np.arctan2(np.linalg.norm(axis), normal[2]))
+        R = np.eye(3)
+        if np.linalg.norm(axis) > 1e-12:
+            k = axis / np.linalg.norm(axis)
+            K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+            R = np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * K @ K
+        elif normal[2] < 0:
+            R = np.diag([1.0, -1.0, -1.0])
+        X_PB = np.eye(4)
+        X_PB[:3, :3] = R
+        X_PB[:3, 3] = -normal * size[2] / 2.0
+        pose = element.find("pose")
+        own = _pose(pose, where) if pose is not None else (0.0,) * 6
+        X = pose_matrix(own[:3], rpy=own[3:]) @ X_PB
+        if pose is None:
+            pose = etree.SubElement(element, "pose")
+        xyz, rpy = xyz_rpy_from_matrix(X)
+        pose.text = " ".join(f"{v:.17g}" for v in (*xyz, *rpy))
+        geometry.remove(plane)
+        box = etree.SubElement(geometry, "box")
+        etree.SubElement(box, "size").text = " ".join(f"{v:g}" for v in size)
 
 
 def _vector(element: Any, default: tuple[float, ...], count: int = 3) -> tuple[float, ...]:

@@ -7,6 +7,7 @@ its diagram, so they take the plant and what to add, and keep no state.
 from __future__ import annotations
 
 import logging
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -136,6 +137,8 @@ def add_placed_model(plant: Any, placed: PlacedModel, scene_graph: Any = None) -
         instances = parser.AddModelsFromString(model.text, model.format)
     except RuntimeError as error:
         first = shown_name(next((line for line in str(error).splitlines() if line.strip()), ""))
+        # Drake numbers the lines of the text it was given, not of the user's file
+        first = re.sub(r"<literal-string>\.\w+:\d+: (error: )?", "", first)
         raise SimulationError(
             f"model '{model.name}' ({model.source or model.format}): Drake cannot load it: {first}"
         ) from None
