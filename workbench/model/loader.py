@@ -157,6 +157,7 @@ def load_robot(
     path = description.path
     document = description.document
     _guard(description)
+    sdf = None
     if document is not None:
         root_link = description.root_link()
         text = description.prepared_text(model_name)
@@ -250,9 +251,7 @@ def load_robot(
         document=document,
         description=description,
     )
-    robot.load_warnings = (
-        warnings if document is not None or sdf is None else sdf.warnings + warnings
-    )
+    robot.load_warnings = (sdf.warnings if sdf is not None else []) + warnings
     if finalize:
         try:
             robot.finalize()

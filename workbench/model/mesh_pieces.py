@@ -154,7 +154,9 @@ def _flat_patches(
     return [np.array(g) for g in groups.values()]
 
 
-def _convex_outline(vertices: np.ndarray, faces: np.ndarray, normal: np.ndarray) -> np.ndarray | None:
+def _convex_outline(
+    vertices: np.ndarray, faces: np.ndarray, normal: np.ndarray
+) -> np.ndarray | None:
     """The corners of a flat patch whose triangles fill its convex outline exactly, else None."""
     if len(faces) == 1:
         return vertices[faces[0]]

@@ -33,6 +33,7 @@ from typing import Any
 import numpy as np
 
 from workbench.errors import SimulationError
+from workbench.model.sdf_names import drake_body, drake_joint, scoped, shown_name
 from workbench.sim.controllers import (
     Command,
     add_controller,
@@ -589,8 +590,6 @@ class World:
         self._require_built("body")
         plant = self.plant
         if "::" in scoped_name:
-            from workbench.model.sdf_names import drake_body
-
             # the longest model name that starts it: links of nested models are A::B::link
             owners = [m for m in self.model_names() if scoped_name.startswith(f"{m}::")]
             model = max(owners, key=len) if owners else scoped_name.partition("::")[0]
@@ -601,8 +600,6 @@ class World:
                 raise SimulationError(f"model '{model}' has no link '{link}'")
             return plant.GetBodyByName(found, instance)
         from pydrake.multibody.tree import BodyIndex
-
-        from workbench.model.sdf_names import shown_name
 
         matches = [
             plant.get_body(BodyIndex(index))
@@ -720,8 +717,6 @@ class World:
         self._require_built("link_states")
         plant = self.plant
         plant_context = plant.GetMyContextFromRoot(self.context)
-        from workbench.model.sdf_names import scoped
-
         states = []
         for name in [*self._robots, *self._models]:
             for index in plant.GetBodyIndices(self.model_instance(name)):
@@ -833,8 +828,6 @@ class World:
 
     def joint(self, model: str, joint_name: str) -> Any:
         """A joint of a model by name."""
-        from workbench.model.sdf_names import drake_joint
-
         instance = self.model_instance(model)
         found = drake_joint(self.plant, joint_name, instance)
         if found is None:
@@ -1101,8 +1094,6 @@ class World:
         body = self.plant.GetBodyFromFrameId(inspector.GetFrameId(geometry_id))
         if body is None or body.index() == self.plant.world_body().index():
             return inspector.GetName(geometry_id)
-        from workbench.model.sdf_names import shown_name
-
         return shown_name(body.name())
 
     def _entry(self, robot_name: str) -> _RobotEntry:
