@@ -239,7 +239,12 @@ def test_a_collada_file_with_an_image_that_names_no_file_is_read_as_gazebo_reads
 
     vertices, faces = prism(_square(100.0), 70.0)  # mm, as gazebo_models' arm_part
     dae = write_dae(
-        tmp_path / "arm.dae", vertices, faces, meter=0.001, unit="millimeter", image_without_file=True
+        tmp_path / "arm.dae",
+        vertices,
+        faces,
+        meter=0.001,
+        unit="millimeter",
+        image_without_file=True,
     )
     mesh = load_triangles(prepare_mesh(dae))
     assert len(mesh.faces) == len(faces)
@@ -270,3 +275,72 @@ def test_a_plane_collision_is_a_box_whose_top_is_the_plane(tmp_path, monkeypatch
     z = world.get_model_pose("crate").translation()[2]
     assert z == pytest.approx(0.4, abs=2e-3)  # resting on the plane at 0.3, not the ground
     server.stop()
+
+
+def test_material_scripts_by_name_and_a_second_mesh_uri_load_as_in_gazebo(tmp_path, monkeypatch):
+    """gazebo_models' husky and pr2 name material scripts without a <uri> (libsdformat 12
+    refuses them, Gazebo 11 loads them); pr2_gripper's meshes carry a second, "__default__"
+    <uri> (libsdformat reads the first)."""
+    from workbench.sim import World
+    from workbench.sim.gazebo_sdf import sim_model_from_sdf
+    from workbench.sim.server import SERVER_PHYSICS
+
+    monkeypatch.setenv("WORKBENCH_CACHE_DIR", str(tmp_path / "cache"))
+    vertices, faces = prism(_square(0.1), 0.2)
+    mesh = write_stl(tmp_path / "meshes" / "wrist_roll.stl", vertices, faces)
+    geometry = (
+        f"<geometry><mesh><uri>{mesh.as_uri()}</uri><scale>1 1 1</scale>"
+        "<uri>__default__</uri></mesh></geometry>"
+    )
+    model = sim_model_from_sdf(
+        "<sdf version='1.5'><model name='pr2'><link name='wrist'>"
+        "<inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>"
+        f"<collision name='c'>{geometry}</collision><visual name='v'>{geometry}"
+        "<material><script><name>Gazebo/Red</name></script></material></visual>"
+        "</link></model></sdf>",
+        name=None,
+        source=str(tmp_path / "model.sdf"),
+        base_dir=tmp_path,
+    )
+    assert "<script>" not in model.text and "__default__" not in model.text
+    world = World(**SERVER_PHYSICS)
+    world.add_model(model, [0.0, 0.0, 0.1])
+    world.build()
+    from pydrake.geometry import Role
+
+    inspector = world.scene_graph.model_inspector()
+    (visual,) = inspector.GetAllGeometryIds(Role.kIllustration)[-1:]
+    rgba = inspector.GetIllustrationProperties(visual).GetProperty("phong", "diffuse")
+    assert [rgba.r(), rgba.g(), rgba.b()] == [1.0, 0.0, 0.0]  # Gazebo/Red
+
+
+def test_a_loop_of_joints_is_refused_in_one_line_naming_the_joint(tmp_path):
+    """gazebo_models' polaris_ranger_ev closes a loop through its differential (Gazebo's ODE
+    simulates loops; Drake builds trees of links)."""
+    from workbench.sim import World
+    from workbench.sim.gazebo_sdf import sim_model_from_sdf
+    from workbench.sim.server import SERVER_PHYSICS
+
+    inertial = "<inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>"
+    links = "".join(
+        f"<link name='{n}'>{inertial}</link>" for n in ("chassis", "left", "right", "diff")
+    )
+    joints = "".join(
+        f"<joint name='{n}' type='revolute'><parent>{p}</parent><child>{c}</child>"
+        "<axis><xyz>0 1 0</xyz></axis></joint>"
+        for n, p, c in (
+            ("left_joint", "chassis", "left"),
+            ("right_joint", "chassis", "right"),
+            ("diff_left", "left", "diff"),
+            ("rear_differential_joint", "right", "diff"),
+        )
+    )
+    model = sim_model_from_sdf(
+        f"<sdf version='1.5'><model name='cart'>{links}{joints}</model></sdf>",
+        name=None,
+        source="cart.sdf",
+    )
+    with pytest.raises(SimulationError) as caught:
+        World(**SERVER_PHYSICS).add_model(model, [0.0, 0.0, 0.5])
+    text = str(caught.value)
+    assert "joint 'rear_differential_joint' closes a loop of links" in text and "\n" not in text

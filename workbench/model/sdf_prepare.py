@@ -38,7 +38,7 @@ def prepare_sdf(text: str, path: Path) -> PreparedSdf | None:
         ModelError: Not XML; an include, a mesh or a ``model://`` URI that cannot be resolved.
     """
     from workbench.model.sdf_nesting import drake_names, flatten_model
-    from workbench.model.sdf_uris import resolve_mesh_uris
+    from workbench.model.sdf_uris import drop_material_scripts, resolve_mesh_uris
     from workbench.model.sdf_xml import parse_sdf_text
 
     root = parse_sdf_text(text, path)
@@ -47,6 +47,7 @@ def prepare_sdf(text: str, path: Path) -> PreparedSdf | None:
         return None
     nesting = flatten_model(model, path=path, version=root.get("version"))
     resolve_mesh_uris(model, path.parent, path)
+    drop_material_scripts(model)
     drake_names(model)
     root.set("version", nesting.version)
     padding = "\n" * ((root.sourceline or 1) - 1)

@@ -5,7 +5,9 @@ A ``<mesh><uri>`` is ``model://MODEL/PATH`` (looked up as
 relative to the SDF file; ``package://`` URIs are left to Drake's package map.
 Each mesh becomes a ``file://`` URI of a file Drake reads: OBJ as is, DAE, STL
 and PLY converted to OBJ (:func:`workbench.model.meshes.prepare_mesh`).
-Other URIs (material scripts, textures) are not read by Drake and are left alone.
+A mesh with several ``<uri>`` keeps the first, as libsdformat reads it. Other URIs
+(material scripts, textures) are not read by Drake; material scripts are dropped
+(:func:`drop_material_scripts`).
 """
 
 from __future__ import annotations
@@ -41,16 +43,28 @@ def mesh_file(uri: str, base_dir: Path | None, *, path: Path | None, line: int |
     return file if file.is_absolute() else (base_dir or Path.cwd()) / file
 
 
+def drop_material_scripts(model: Any) -> None:
+    """Remove ``<material><script>`` elements (Gazebo's OGRE material scripts), which Drake does
+    not draw and refuses without a ``<uri>`` (Gazebo 11 loads a script given by name alone)."""
+    for script in list(model.iter("script")):
+        parent = script.getparent()
+        if parent is not None and parent.tag == "material":
+            parent.remove(script)
+
+
 def resolve_mesh_uris(model: Any, base_dir: Path | None, path: Path | None) -> None:
     """Turn every ``<mesh><uri>`` of ``model`` (an lxml element) into a ``file://`` URI Drake reads.
 
     Raises:
         ModelError: A URI that names no file; a missing, oversized or unconvertible mesh.
     """
-    for uri in model.iter("uri"):
-        parent = uri.getparent()
-        if parent is None or parent.tag != "mesh":
+    for mesh in model.iter("mesh"):
+        uris = mesh.findall("uri")
+        if not uris:
             continue
+        uri = uris[0]
+        for extra in uris[1:]:  # libsdformat reads the first (exporters add "__default__")
+            mesh.remove(extra)
         value = (uri.text or "").strip()
         if not value or value.startswith("package://"):
             continue

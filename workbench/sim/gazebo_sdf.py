@@ -25,7 +25,7 @@ from lxml import etree
 from workbench.errors import ModelError, SimulationError
 from workbench.model.sdf_names import drake_name, shown_name
 from workbench.model.sdf_nesting import drake_names, flatten_model
-from workbench.model.sdf_uris import resolve_mesh_uris
+from workbench.model.sdf_uris import drop_material_scripts, resolve_mesh_uris
 from workbench.sim.inertia import ENTRIES, repaired
 from workbench.sim.model_spec import CollisionPieces, SimModel, element_text, plugin_spec
 
@@ -139,6 +139,7 @@ def sim_model_from_element(
             error.message, path=error.path or path, line=error.line, hint=error.hint
         ) from None
     _material_colours(model_element)
+    drop_material_scripts(model_element)
     for link in links:
         _planes_as_boxes(link, where)
     for link in links:

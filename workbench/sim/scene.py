@@ -138,7 +138,7 @@ def add_placed_model(plant: Any, placed: PlacedModel, scene_graph: Any = None) -
     except RuntimeError as error:
         first = shown_name(next((line for line in str(error).splitlines() if line.strip()), ""))
         # Drake numbers the lines of the text it was given, not of the user's file
-        first = re.sub(r"<literal-string>\.\w+:\d+: (error: )?", "", first)
+        first = re.sub(r"<(literal|data)-string>(\.\w+)?:\d+: (error: )?", "", first)
         raise SimulationError(
             f"model '{model.name}' ({model.source or model.format}): Drake cannot load it: {first}"
         ) from None
@@ -147,6 +147,7 @@ def add_placed_model(plant: Any, placed: PlacedModel, scene_graph: Any = None) -
     if not instances:
         raise SimulationError(f"model '{model.name}' ({model.source}) defines no model")
     instance = instances[0]
+    _refuse_loops(plant, instance, model)
     X_pose = rigid_transform(model.pose[:3], rpy=model.pose[3:])
     X_WM = placed.X_WM.multiply(X_pose)
     roots = root_bodies(plant, instance)
@@ -183,6 +184,30 @@ def add_placed_model(plant: Any, placed: PlacedModel, scene_graph: Any = None) -
         add_corner_points(plant, scene_graph, instance)
     placed.instance = instance
     return instance
+
+
+def _refuse_loops(plant: Any, instance: Any, model: SimModel) -> None:
+    """Refuse, naming the joint, a model whose joints close a loop (Drake builds trees only;
+    it would fail later, at Finalize, without naming the model)."""
+    group: dict[int, int] = {}
+
+    def root(i: int) -> int:
+        while group.setdefault(i, i) != i:
+            group[i] = group[group[i]]
+            i = group[i]
+        return i
+
+    for index in plant.GetJointIndices(instance):
+        joint = plant.get_joint(index)
+        a, b = root(int(joint.parent_body().index())), root(int(joint.child_body().index()))
+        if a == b:
+            raise SimulationError(
+                f"model '{model.name}' ({model.source or model.format}): joint "
+                f"'{shown_name(joint.name())}' closes a loop of links, which Drake cannot "
+                "simulate (Gazebo can)",
+                hint="remove one joint of the loop",
+            )
+        group[a] = b
 
 
 def add_collision_pieces(plant: Any, instance: Any, model: SimModel) -> None:

@@ -377,7 +377,11 @@ class World:
             return
         if meshcat is not None:
             self.meshcat = meshcat
-        self._assemble()
+        try:
+            self._assemble()
+        except RuntimeError as error:  # Drake's refusal at Finalize, as one line
+            first = next((line for line in str(error).splitlines() if line.strip()), "")
+            raise SimulationError(f"Drake cannot build the world: {shown_name(first)}") from None
         self.simulator.Initialize()
 
     def _assemble(self) -> None:
