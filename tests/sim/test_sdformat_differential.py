@@ -283,6 +283,34 @@ def test_models_nested_inline_with_their_own_static_as_turtlebot3_house(
     }
 
 
+def test_revolute2_wheels_move_as_universal_joints_as_utility_cart(sdformat_checker, tmp_path):
+    path = tmp_path / "cart.sdf"
+    steer = (
+        "<axis><xyz>0 0 1</xyz><limit><lower>-0.8727</lower><upper>0.8727</upper></limit>"
+        "<use_parent_model_frame>true</use_parent_model_frame></axis>"
+        "<axis2><xyz>0 1 0</xyz><use_parent_model_frame>true</use_parent_model_frame></axis2>"
+    )
+    path.write_text(
+        sdf(
+            "1.5",
+            "<model name='car'>"
+            + link("chassis", "0 0 0.6 0 0 0")
+            + link("front_left_wheel", "1.2 0.6 0.3 0 1.5707 1.5707")
+            + "<joint type='revolute2' name='front_left_joint'><parent>chassis</parent>"
+            "<child>front_left_wheel</child>" + steer + "<physics><ode><suspension><cfm>0.3"
+            "</cfm><erp>0.4</erp></suspension></ode></physics></joint></model>",
+        )
+    )
+    compare(sdformat_checker, path)
+    model = load_sim_model(path)
+    assert any("'front_left_joint' moves as a universal joint" in w for w in model.warnings)
+    world = World(**SERVER_PHYSICS)
+    world.add_model(model)
+    world.build()
+    joint = world.joint("car", "front_left_joint")
+    assert joint.type_name() == "universal" and joint.num_positions() == 2
+
+
 def test_xml_that_libsdformat_forgives_is_read_and_broken_xml_refused(sdformat_checker, tmp_path):
     path = tmp_path / "pit.sdf"
     path.write_text(

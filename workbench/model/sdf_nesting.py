@@ -31,7 +31,7 @@ from lxml import etree
 
 from workbench.errors import ModelError
 from workbench.model.limits import MAX_LINKS, MAX_MODEL_BYTES, check_input_file
-from workbench.model.sdf_names import JOINT_MARK, drake_name
+from workbench.model.sdf_names import JOINT_MARK, drake_name, shown_name
 
 #: Deepest chain of models including models.
 MAX_INCLUDE_DEPTH = 16
@@ -84,6 +84,7 @@ def flatten_model(
     _expand_includes(model, path, version, nesting, (path,) if path else (), 0)
     _merge_nested(model, version, path, nesting)
     _mark_clashing_joints(model, version, path, nesting)
+    _revolute2_as_universal(model, path, nesting)
     _write_for_version(model, nesting.version)
     links = len(model.findall("link"))
     if links > MAX_LINKS:
@@ -422,6 +423,32 @@ def _mark_clashing_joints(
             f"{path or 'model'}:{joint.sourceline}: joint '{name}' of model "
             f"'{model.get('name')}' has the name of a link (SDFormat before 1.7 allows it; "
             "libsdformat calls it '" + name + "_joint')"
+        )
+
+
+def _revolute2_as_universal(model: Any, path: Path | None, nesting: Nesting) -> None:
+    """A ``revolute2`` joint (Gazebo's hinge-2: one axis on the parent, one on the child) with
+    orthogonal axes moves as a universal joint, which Drake has; without suspension."""
+    for joint in model.findall("joint"):
+        if joint.get("type") != "revolute2":
+            continue
+        axes = [joint.find(tag) for tag in ("axis", "axis2")]
+        if any(a is None or a.find("xyz") is None for a in axes):
+            continue
+        try:
+            u, v = (np.array([float(x) for x in (a.findtext("xyz") or "").split()]) for a in axes)
+        except ValueError:
+            continue
+        same_frame = axes[0].get(_IN_MODEL) == axes[1].get(_IN_MODEL)
+        if u.shape != (3,) or v.shape != (3,) or not same_frame:
+            continue
+        if abs(float(u @ v)) > 1e-9 * float(np.linalg.norm(u) * np.linalg.norm(v)):
+            continue  # Drake's universal joint needs orthogonal axes; Drake refuses it
+        joint.set("type", "universal")
+        nesting.warnings.append(
+            f"{path or 'model'}:{joint.sourceline}: revolute2 joint "
+            f"'{shown_name(joint.get('name', ''))}' moves as a universal joint (its two axes "
+            "are orthogonal); Gazebo's suspension (<suspension>) is not simulated"
         )
 
 
