@@ -246,17 +246,24 @@ def check_robot(source: str | os.PathLike[str], *, load: bool = True) -> CheckRe
 
 def _check_sdf(description: RobotDescription) -> CheckReport:
     from workbench.model.loader import load_robot
+    from workbench.model.sdf_names import shown_name
 
     path = description.path
     robot = load_robot(description)
     tree = KinematicTree()
+    joints = [
+        replace(j, name=shown_name(j.name), parent=shown_name(j.parent), child=shown_name(j.child))
+        for j in robot.joints
+    ]
     for link in robot.links:
-        tree.children[link.name] = [j for j in robot.joints if j.parent == link.name]
+        shown = shown_name(link.name)
+        tree.children[shown] = [j for j in joints if j.parent == shown]
+    root = shown_name(robot.root_link)
     report = CheckReport(
         path,
         robot.name,
-        robot.root_link,
-        tree_lines(robot.name, robot.root_link, tree),
+        root,
+        tree_lines(robot.name, root, tree),
         loaded=True,
     )
     for message in robot.load_warnings:

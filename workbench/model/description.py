@@ -36,6 +36,7 @@ from workbench.model.urdf_xml import UrdfDocument, parse_urdf_text
 if TYPE_CHECKING:
     from workbench.model.info import JointInfo
     from workbench.model.robot import Robot
+    from workbench.model.sdf_prepare import PreparedSdf
 
 
 @dataclass(eq=False)
@@ -157,6 +158,22 @@ class RobotDescription:
         # Blank lines in place of the prolog keep Drake's line numbers those of the file.
         padding = "\n" * ((self.document.root.sourceline or 1) - 1)
         return padding + etree.tostring(root, encoding="unicode")
+
+    def prepared_sdf(self) -> PreparedSdf | None:
+        """An SDF model as Drake is given it (includes expanded, nested models merged, meshes
+        resolved through ``GAZEBO_MODEL_PATH`` as ``workbench sim`` does); None for an SDF
+        file whose top is not a ``<model>`` (Drake reads it itself). Prepared on the first call.
+
+        Raises:
+            ModelError: A URDF, or an include, mesh or ``model://`` URI that cannot be resolved.
+        """
+        if self.document is not None:
+            raise ModelError("only an SDF model has prepared SDF text", path=self.path)
+        if self._prepared is None:
+            from workbench.model.sdf_prepare import prepare_sdf
+
+            self._prepared = prepare_sdf(self.text, self.path) or False
+        return self._prepared or None
 
     def instantiate(self, **options: Any) -> Robot:
         """Load this description into a new (or the given) Drake plant: ``load_robot(self, ...)``."""

@@ -13,8 +13,6 @@ import math
 from pathlib import Path
 from typing import Any
 
-from lxml import etree
-
 from workbench.errors import ModelError
 from workbench.model.limits import (
     MAX_LINKS,
@@ -22,7 +20,6 @@ from workbench.model.limits import (
     check_input_file,
     name_problem,
     shown_name,
-    xml_error_text,
 )
 
 #: Numbers URDF and SDF share: sizes, inertia, joint limits and dynamics.
@@ -158,17 +155,10 @@ def check_sdf_file(path: Path) -> None:
             size that is not above zero, or joint limits that are reversed.
         ModelError: The file cannot be read or is not XML.
     """
+    from workbench.model.sdf_xml import read_sdf_text
+
     check_input_file(path, "model file", MAX_MODEL_BYTES)
-    parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=True)
-    try:
-        root = etree.parse(str(path), parser).getroot()
-    except etree.XMLSyntaxError as error:
-        raise ModelError(
-            f"not well-formed XML: {xml_error_text(str(error.msg))}",
-            path=path,
-            line=error.lineno,
-            hint="fix the XML syntax at that line",
-        ) from None
+    root = read_sdf_text(path)
     _check_names(root, SDF_NAMED, path)
     for element in root.iter():
         if not isinstance(element.tag, str) or element.tag == "plugin":

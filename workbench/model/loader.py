@@ -15,6 +15,7 @@ from workbench.model.description import prepared_urdf as prepared_urdf  # re-exp
 from workbench.model.drake_guard import ModelInputError, check_sdf_file, check_urdf_element
 from workbench.model.info import LinkInfo
 from workbench.model.robot import Robot, joint_info_from_plant
+from workbench.model.sdf_names import shown_name
 from workbench.model.urdf_xml import UrdfDocument
 
 
@@ -30,6 +31,8 @@ _LONGEST_MESSAGE = 500
 #: URDF tags for ROS's drivers that Drake ignores with a warning; not worth one when loading
 #: (``workbench check`` still lists them).
 _ROS_RUNTIME_TAGS = ("safety_controller", "calibration")
+#: Drake's warning about an SDFormat element it does not read; group 1 is the element.
+_IGNORED_SDF = re.compile(r"Ignoring unsupported SDFormat element in \w+: (\w+)")
 
 
 class _Collector(logging.Handler):
@@ -55,11 +58,23 @@ def _drake_warnings(path: Path, into: list[str]):
     finally:
         logger.removeHandler(collector)
         logger.propagate = propagate
+        ignored: dict[str, int] = {}
         for message in collector.messages:
-            text = " ".join(message.replace("<literal-string>.urdf", str(path)).split())
+            for literal in ("<literal-string>.urdf", "<literal-string>.sdf"):
+                message = message.replace(literal, str(path))
+            text = shown_name(" ".join(message.split()))
+            match = _IGNORED_SDF.search(text)
+            if match:  # Gazebo's own elements (sensors, material scripts): one line for all
+                ignored[match.group(1)] = ignored.get(match.group(1), 0) + 1
+                continue
             into.append(text)
             quiet = any(f"tag '{tag}' found" in text for tag in _ROS_RUNTIME_TAGS)
             _LOG.log(logging.DEBUG if quiet else logging.WARNING, "%s", text)
+        if ignored:
+            counts = ", ".join(f"{tag} ({n})" for tag, n in sorted(ignored.items()))
+            text = f"Drake does not read these SDFormat elements (Gazebo's own): {counts}"
+            into.append(text)
+            _LOG.debug("%s: %s", path, text)
 
 
 def load_document(
@@ -165,9 +180,12 @@ def load_robot(
     path = description.path
     document = description.document
     _guard(description)
+    sdf = None
     if document is not None:
         root_link = description.root_link()
         text = description.prepared_text(model_name)
+    else:
+        sdf = description.prepared_sdf()
 
     scene_graph = None
     if plant is None:
@@ -189,6 +207,8 @@ def load_robot(
         with _drake_warnings(path, warnings):
             if document is not None:
                 instances = parser.AddModelsFromString(text, "urdf")
+            elif sdf is not None:
+                instances = parser.AddModelsFromString(sdf.text, "sdf")
             else:
                 instances = parser.AddModels(str(path))  # type: ignore[arg-type]
     except (RuntimeError, ValueError) as error:  # pydrake raises ValueError for bad vectors
@@ -254,7 +274,7 @@ def load_robot(
         document=document,
         description=description,
     )
-    robot.load_warnings = warnings
+    robot.load_warnings = (sdf.warnings if sdf is not None else []) + warnings
     if finalize:
         try:
             robot.finalize()

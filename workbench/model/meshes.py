@@ -1,6 +1,8 @@
 """Make mesh files readable by Drake: OBJ/glTF pass through, STL/DAE/PLY become OBJ.
 
-Converted meshes go to a cache directory (``$WORKBENCH_CACHE_DIR``, else
+A COLLADA file's ``<unit meter="...">`` scales its vertices into metres, as
+Gazebo and RViz read it (a mesh drawn in inches has ``meter="0.0254"``); its
+``<up_axis>`` is ignored, as Gazebo ignores it. Converted meshes go to a cache directory (``$WORKBENCH_CACHE_DIR``, else
 ``$XDG_CACHE_HOME/workbench/meshes``, else ``~/.cache/workbench/meshes``),
 keyed by the source path, size and modification time, so a mesh is converted
 once.
@@ -12,6 +14,7 @@ import contextlib
 import hashlib
 import importlib.util
 import logging
+import math
 import os
 import warnings
 from collections.abc import Iterator
@@ -99,6 +102,19 @@ def _reason(error: Exception, suffix: str) -> str:
     return text if len(text) <= _LONGEST_REASON else text[: _LONGEST_REASON - 3] + "..."
 
 
+def unit_scale(mesh: Any) -> float:
+    """Metres per unit of a mesh trimesh read (COLLADA's ``<unit meter>``; 1 when unknown)."""
+    units = str(getattr(mesh, "units", None) or mesh.metadata.get("units", "") or "")
+    factor, _, unit = units.partition("*")
+    if unit.strip() != "meters":
+        return 1.0
+    try:
+        value = float(factor)
+    except ValueError:
+        return 1.0
+    return value if math.isfinite(value) and value > 0 else 1.0
+
+
 def prepare_mesh(path: Path, *, where: Path | None = None, line: int | None = None) -> Path:
     """Return a path Drake can read for the mesh at ``path``, converting if needed.
 
@@ -110,7 +126,9 @@ def prepare_mesh(path: Path, *, where: Path | None = None, line: int | None = No
     if suffix in NATIVE_FORMATS:
         return path.resolve()
     stat = path.stat()
-    key = hashlib.sha1(f"{path.resolve()}|{stat.st_size}|{stat.st_mtime_ns}".encode()).hexdigest()
+    # "units": meshes converted before COLLADA units were applied are not reused
+    key = f"{path.resolve()}|{stat.st_size}|{stat.st_mtime_ns}|units"
+    key = hashlib.sha1(key.encode()).hexdigest()
     target = cache_dir() / f"{path.stem}-{key[:16]}.obj"
     if target.is_file():
         return target
@@ -119,8 +137,13 @@ def prepare_mesh(path: Path, *, where: Path | None = None, line: int | None = No
 
         with _quiet_converters():
             mesh: Any = trimesh.load(str(path), force="mesh")  # a Trimesh with force="mesh"
+            if len(mesh.faces) == 0 and suffix == ".dae":
+                mesh = _collada_geometry(path, trimesh)
             if len(mesh.faces) == 0:
                 raise ValueError("the mesh has no triangles")
+            scale = unit_scale(mesh)
+            if scale != 1.0:
+                mesh.apply_scale(scale)
             target.parent.mkdir(parents=True, exist_ok=True)
             partial = target.with_suffix(f".{os.getpid()}.tmp")
             mesh.export(str(partial), file_type="obj")
@@ -136,3 +159,24 @@ def prepare_mesh(path: Path, *, where: Path | None = None, line: int | None = No
             hint=hint,
         ) from None
     return target
+
+
+def _collada_geometry(path: Path, trimesh: Any) -> Any:
+    """A COLLADA file's triangles read without its images, materials and effects.
+
+    pycollada refuses a whole file over an image without a file path (3ds Max's
+    exporter writes them) and trimesh then reads no triangles; Gazebo draws the
+    geometry anyway.
+    """
+    import io
+
+    from lxml import etree
+
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=True)
+    root = etree.parse(str(path), parser).getroot()
+    for element in list(root.iter()):
+        name = etree.QName(element).localname if isinstance(element.tag, str) else ""
+        if name in ("library_images", "library_materials", "library_effects", "bind_material"):
+            element.getparent().remove(element)
+    data = io.BytesIO(etree.tostring(root))
+    return trimesh.load(data, file_type="dae", force="mesh")

@@ -299,7 +299,12 @@ def joint_info_from_plant(joint) -> JointInfo:
     axis = np.array([1.0, 0.0, 0.0])
     lower = upper = velocity = effort = None
     if joint.num_positions() == 1:
-        axis = np.array(joint.revolute_axis() if kind == "revolute" else joint.translation_axis())
+        if kind == "revolute":
+            axis = np.array(joint.revolute_axis())
+        elif hasattr(joint, "translation_axis"):
+            axis = np.array(joint.translation_axis())
+        elif hasattr(joint, "screw_axis"):  # a screw joint turns and slides along one axis
+            axis = np.array(joint.screw_axis())
         lower = float(joint.position_lower_limits()[0])
         upper = float(joint.position_upper_limits()[0])
         velocity = float(joint.velocity_upper_limits()[0])

@@ -327,6 +327,7 @@ class GazeboRosApi:
                     success=True,
                     status_message="GetModelProperties: got properties",
                 )
+            from workbench.model.sdf_names import shown_name
             from workbench.sim.scene import joint_names
 
             plant = world.plant
@@ -337,8 +338,8 @@ class GazeboRosApi:
                 inspector.GetName(g) for b in bodies for g in plant.GetCollisionGeometriesForBody(b)
             ]
             return GetModelProperties.Response(
-                canonical_body_name=world.root_body(name).name(),
-                body_names=[b.name() for b in bodies],
+                canonical_body_name=shown_name(world.root_body(name).name()),
+                body_names=[shown_name(b.name()) for b in bodies],
                 geom_names=geoms,
                 joint_names=joint_names(plant, instance),
                 is_static=not world.root_body(name).is_floating_base_body(),

@@ -5,8 +5,10 @@ The model gets its world name; its own ``<pose>`` is lifted into
 spawner does); ``<static>`` and ``<self_collide>`` become fields (the simulator
 welds a static model where it is put); ``<gravity>false</gravity>`` on every
 link switches gravity off for the model; ``<plugin>`` and ``<sensor>`` elements
-are lifted out; ``model://NAME/...`` and relative mesh URIs become absolute
-files Drake can read. Drake reads the rest of SDFormat itself, including
+are lifted out; ``<include>`` and nested ``<model>`` elements are merged into
+the model (:mod:`workbench.model.sdf_nesting`, names as Gazebo gives them);
+``model://NAME/...`` and relative mesh URIs become files Drake can read
+(:mod:`workbench.model.sdf_uris`); stock Gazebo material scripts become colours. Drake reads the rest of SDFormat itself, including
 ``<surface><friction><ode><mu>``. Inertias that break the triangle inequality
 are fixed with a warning, as in URDF (:mod:`workbench.sim.inertia`).
 """
@@ -20,9 +22,12 @@ from typing import Any
 import numpy as np
 from lxml import etree
 
-from workbench.errors import SimulationError
+from workbench.errors import ModelError, SimulationError
+from workbench.model.sdf_names import drake_name, shown_name
+from workbench.model.sdf_nesting import drake_names, flatten_model
+from workbench.model.sdf_uris import drop_material_scripts, resolve_mesh_uris
 from workbench.sim.inertia import ENTRIES, repaired
-from workbench.sim.model_spec import SimModel, element_text, plugin_spec
+from workbench.sim.model_spec import CollisionPieces, SimModel, element_text, plugin_spec
 
 DRAKE_NS = "http://drake.mit.edu"
 
@@ -33,13 +38,15 @@ def sim_model_from_sdf(
     """The :class:`SimModel` of an SDF file with one ``<model>`` (or a bare ``<model>``).
 
     Raises:
-        SimulationError: Not XML, no ``<model>``, a model without links, a nested
-            ``<include>``, a mesh that cannot be found.
+        SimulationError: Not XML, no ``<model>``, a model without links, an include that
+            cannot be resolved, a mesh that cannot be found.
     """
+    from workbench.model.sdf_xml import parse_sdf_text
+
     try:
-        root = etree.fromstring(text.strip().encode())
-    except etree.XMLSyntaxError as error:
-        raise SimulationError(f"{source}: not valid XML: {error}") from None
+        root = parse_sdf_text(text.strip())
+    except ModelError as error:
+        raise SimulationError(f"{source}: not valid XML: {error.message}") from None
     model_element = root if root.tag == "model" else root.find("model")
     if model_element is None:
         what = "a world, not a model" if root.find("world") is not None else "no <model>"
@@ -60,23 +67,27 @@ def sim_model_from_element(
 ) -> SimModel:
     """:func:`sim_model_from_sdf` for a parsed ``<model>`` element (changed in place)."""
     where = f"{source}:{model_element.sourceline}" if model_element.sourceline else source
+    path = Path(source) if base_dir is not None and Path(source).is_file() else None
+    try:
+        nesting = flatten_model(model_element, path=path, version=version)
+    except ModelError as error:
+        raise SimulationError(
+            error.message, path=error.path or path, line=error.line, hint=error.hint
+        ) from None
     links = model_element.findall("link")
     if not links:
         raise SimulationError(f"{where}: model '{model_element.get('name')}' has no <link>")
-    if model_element.find("include") is not None or model_element.find("model") is not None:
-        raise SimulationError(
-            f"{where}: nested models (<include>/<model> inside a <model>) are not supported",
-            hint="put the models side by side in the world",
-        )
     if name:
         model_element.set("name", name)
+    canonical = model_element.get("canonical_link") or links[0].get("name", "")
     model = SimModel(
         name=model_element.get("name", ""),
         format="sdf",
         text="",
-        root_link=model_element.get("canonical_link") or links[0].get("name"),
+        root_link=drake_name(canonical),
         source=source,
     )
+    model.warnings.extend(nesting.warnings)
     pose = model_element.find("pose")
     if pose is not None:
         model.pose = _pose(pose, where)
@@ -91,19 +102,22 @@ def sim_model_from_element(
         model_element.remove(plugin)
     gravity_off = []
     for link in links:
+        link_name = link.get("name", "")
         for sensor in link.findall("sensor"):
             for plugin in sensor.iter("plugin"):
                 model.plugins.append(
-                    plugin_spec(plugin, "sensor", link.get("name"), base_dir, source, sensor=sensor)
+                    plugin_spec(
+                        plugin, "sensor", shown_name(link_name), base_dir, source, sensor=sensor
+                    )
                 )
-            model.sensors.append((link.get("name", ""), element_text(sensor)))
+            model.sensors.append((shown_name(link_name), element_text(sensor)))
             link.remove(sensor)
         gravity = link.find("gravity")
         if gravity is not None:
             if not _truth(gravity.text):
-                gravity_off.append(link.get("name"))
+                gravity_off.append(link_name)
             link.remove(gravity)
-        if not model.static:
+        if not nesting.static_links.get(link_name, model.static):
             _fix_inertia(link, model, where)
     if gravity_off and len(gravity_off) == len(links):
         model.gravity = False
@@ -112,12 +126,156 @@ def sim_model_from_element(
             f"{where}: <gravity>false</gravity> on links {', '.join(gravity_off)} only; "
             "workbench switches gravity per model, so it stays on"
         )
+    model.static_links = {
+        drake_name(link): static
+        for link, static in nesting.static_links.items()
+        if static != model.static
+    }
     _ball_casters(model_element, model, where)
-    _absolute_uris(model_element, base_dir, where)
-    sdf = etree.Element("sdf", version=version or "1.7")
+    try:
+        resolve_mesh_uris(model_element, base_dir, path)
+    except ModelError as error:
+        raise SimulationError(
+            error.message, path=error.path or path, line=error.line, hint=error.hint
+        ) from None
+    _material_colours(model_element)
+    drop_material_scripts(model_element)
+    for link in links:
+        _planes_as_boxes(link, where)
+    for link in links:
+        if nesting.static_links.get(link.get("name", ""), model.static):
+            _split_concave_meshes(link, model, where)
+    drake_names(model_element)
+    sdf = etree.Element("sdf", version=nesting.version)
     sdf.append(model_element)
     model.text = etree.tostring(sdf, encoding="unicode")
     return model
+
+
+def _split_concave_meshes(link: Any, model: SimModel, where: str) -> None:
+    """Take the concave collision meshes of a static link out of the SDF as convex pieces."""
+    from urllib.parse import unquote, urlparse
+
+    from workbench.model.mesh_pieces import TooManyPieces, convex_pieces
+
+    for collision in link.findall("collision"):
+        mesh = collision.find("geometry/mesh")
+        uri = (mesh.findtext("uri") or "").strip() if mesh is not None else ""
+        pose = collision.find("pose")
+        if (
+            not uri.startswith("file://")
+            or mesh.find("submesh") is not None
+            or (pose is not None and pose.get("relative_to") not in (None, ""))
+        ):
+            continue
+        scale = _vector(mesh.find("scale"), (1.0, 1.0, 1.0))
+        try:
+            pieces = convex_pieces(Path(unquote(urlparse(uri).path)), np.array(scale))
+        except TooManyPieces as error:
+            model.warnings.append(
+                f"{where}: collision '{collision.get('name')}' of link "
+                f"'{shown_name(link.get('name', ''))}' is a concave mesh with {error}; it "
+                "collides, and the laser sees it, as its convex hull"
+            )
+            continue
+        except Exception:  # trimesh cannot read it again: Drake keeps its hull
+            continue
+        if pieces is None:
+            continue
+        mu = [
+            value
+            for value in (
+                _vector(collision.find(f"surface/friction/ode/{key}"), (), count=1)
+                for key in ("mu", "mu2")
+            )
+            if value
+        ]
+        model.collision_pieces.append(
+            CollisionPieces(
+                link=drake_name(link.get("name", "")),
+                name=collision.get("name", "collision"),
+                pose=_pose(pose, where) if pose is not None else (0.0,) * 6,
+                pieces=tuple(pieces),
+                friction=float(np.mean([m[0] for m in mu])) if mu else 1.0,
+            )
+        )
+        link.remove(collision)
+
+
+#: The side of the box a collision ``<plane>`` becomes, and its thickness below the plane, m.
+PLANE_SIDE, PLANE_THICKNESS = 200.0, 1.0
+
+
+def _planes_as_boxes(link: Any, where: str) -> None:
+    """Give ``<plane>`` shapes as boxes whose top face is the plane.
+
+    Gazebo's plane collides as an infinite plane; Drake 1.51 crashes (in its broad
+    phase) once a second half space, beside the ground's, shares a plant with a few
+    hundred shapes. A box :data:`PLANE_SIDE` wide and :data:`PLANE_THICKNESS` deep
+    under the plane collides the same wherever a robot drives; a visual plane
+    becomes a thin box of the plane's ``<size>``.
+    """
+    from workbench.spatial import pose_matrix, xyz_rpy_from_matrix
+
+    for element in [*link.findall("collision"), *link.findall("visual")]:
+        geometry = element.find("geometry")
+        plane = geometry.find("plane") if geometry is not None else None
+        if plane is None:
+            continue
+        normal = np.array(_vector(plane.find("normal"), (0.0, 0.0, 1.0)), dtype=float)
+        normal = normal / np.linalg.norm(normal) if np.linalg.norm(normal) > 0 else np.eye(3)[2]
+        if element.tag == "collision":
+            size = (PLANE_SIDE, PLANE_SIDE, PLANE_THICKNESS)
+        else:
+            drawn = _vector(plane.find("size"), (PLANE_SIDE, PLANE_SIDE), count=2)
+            size = (drawn[0], drawn[1], 0.001)
+        # a rotation taking z to the normal, then the box moved half its depth under the plane
+        axis = np.cross([0.0, 0.0, 1.0], normal)
+        angle = float(np.arctan2(np.linalg.norm(axis), normal[2]))
+        R = np.eye(3)
+        if np.linalg.norm(axis) > 1e-12:
+            k = axis / np.linalg.norm(axis)
+            K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+            R = np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * K @ K
+        elif normal[2] < 0:
+            R = np.diag([1.0, -1.0, -1.0])
+        X_PB = np.eye(4)
+        X_PB[:3, :3] = R
+        X_PB[:3, 3] = -normal * size[2] / 2.0
+        pose = element.find("pose")
+        own = _pose(pose, where) if pose is not None else (0.0,) * 6
+        X = pose_matrix(own[:3], rpy=own[3:]) @ X_PB
+        if pose is None:
+            pose = etree.SubElement(element, "pose")
+        xyz, rpy = xyz_rpy_from_matrix(X)
+        pose.text = " ".join(f"{v:.17g}" for v in (*xyz, *rpy))
+        geometry.remove(plane)
+        box = etree.SubElement(geometry, "box")
+        etree.SubElement(box, "size").text = " ".join(f"{v:g}" for v in size)
+
+
+def _vector(element: Any, default: tuple[float, ...], count: int = 3) -> tuple[float, ...]:
+    """The numbers of ``element``, ``default`` when it is missing or not ``count`` finite numbers."""
+    if element is None:
+        return default
+    try:
+        values = tuple(float(v) for v in (element.text or "").split())
+    except ValueError:
+        return default
+    ok = len(values) == count and all(np.isfinite(values)) and min(map(abs, values)) > 0
+    return values if ok else default
+
+
+def _material_colours(model_element: Any) -> None:
+    """Give visuals that name one of Gazebo's stock material scripts its colour (Drake reads
+    ``<diffuse>``, not scripts)."""
+    from workbench.sim.gazebo_urdf import GAZEBO_COLOURS
+
+    for material in model_element.iter("material"):
+        script_name = (material.findtext("script/name") or "").strip()
+        rgba = GAZEBO_COLOURS.get(script_name)
+        if rgba is not None and material.find("diffuse") is None:
+            etree.SubElement(material, "diffuse").text = " ".join(f"{c:g}" for c in rgba)
 
 
 def _ball_casters(model_element: Any, model: SimModel, where: str) -> None:
@@ -157,37 +315,9 @@ def _ball_casters(model_element: Any, model: SimModel, where: str) -> None:
             for key in ("mu_dynamic", "mu_static"):
                 etree.SubElement(properties, f"{{{DRAKE_NS}}}{key}").text = "0"
         model.warnings.append(
-            f"{where}: ball joint '{joint.get('name')}' carries a sphere caster: simulated as a "
+            f"{where}: ball joint '{shown_name(joint.get('name', ''))}' carries a sphere caster: simulated as a "
             "fixed, frictionless caster (Drake's ball joint stops at pitch = pi/2)"
         )
-
-
-def _absolute_uris(model_element: Any, base_dir: Path | None, where: str) -> None:
-    from workbench.model.meshes import prepare_mesh
-    from workbench.sim.model_paths import find_model_dir
-
-    for uri in model_element.iter("uri"):
-        value = (uri.text or "").strip()
-        if not value or value.startswith("package://"):
-            continue
-        if value.startswith("model://"):
-            model_name, _, rest = value[len("model://") :].partition("/")
-            folder = find_model_dir(model_name)
-            if folder is None:
-                raise SimulationError(
-                    f"{where}: cannot resolve {value}: no model '{model_name}'",
-                    hint="add its folder's parent to GAZEBO_MODEL_PATH",
-                )
-            path = folder / rest
-        elif value.startswith("file://"):
-            path = Path(value[len("file://") :])
-        else:
-            path = Path(value)
-            if not path.is_absolute():
-                path = (base_dir or Path.cwd()) / path
-        if uri.getparent() is not None and uri.getparent().tag == "mesh":
-            path = prepare_mesh(path, where=None, line=uri.sourceline)
-        uri.text = str(path)
 
 
 def _fix_inertia(link: Any, model: SimModel, where: str) -> None:

@@ -122,11 +122,16 @@ def build_server(options: ServerOptions, bus: Any = None) -> tuple[Any, Any, Any
     world = World(
         time_step=step,
         ground=world_file.ground_plane,
+        ground_z=world_file.ground_z,
         gravity=physics.gravity if physics.gravity is not None else 9.81,
         physics=SERVER_PHYSICS["physics"],
     )
     for item in world_file.models:
-        world.add_model(item.model, {"xyz": item.pose[:3], "rpy": item.pose[3:]})
+        world.add_model(
+            item.model,
+            {"xyz": item.pose[:3], "rpy": item.pose[3:]},
+            joint_positions=item.joint_positions,
+        )
         for warning in item.model.warnings:
             _LOG.warning("%s", warning)
     view = None

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from workbench.errors import SimulationError
+from workbench.model.sdf_names import drake_joint, shown_name
 
 if TYPE_CHECKING:
     from workbench.sim.server import SimServer
@@ -50,7 +51,7 @@ class ModelHandle:
         """The model's links."""
         plant = self._world.plant
         return [
-            plant.get_body(i).name()
+            shown_name(plant.get_body(i).name())
             for i in plant.GetBodyIndices(self._world.model_instance(self.name))
         ]
 
@@ -164,12 +165,13 @@ class ModelHandle:
 
     def has_joint(self, joint: str) -> bool:
         """True when the model has a joint called ``joint``."""
-        return bool(self._world.plant.HasJointNamed(joint, self._world.model_instance(self.name)))
+        instance = self._world.model_instance(self.name)
+        return drake_joint(self._world.plant, joint, instance) is not None
 
     def joint_links(self, joint: str) -> tuple[str, str]:
         """``(parent, child)``: the links a joint connects."""
         item = self._world.joint(self.name, joint)
-        return item.parent_body().name(), item.child_body().name()
+        return shown_name(item.parent_body().name()), shown_name(item.child_body().name())
 
     def link_pose(self, link: str) -> Any:
         """``X_WL``, a link's frame in the world (a RigidTransform)."""
@@ -181,7 +183,7 @@ class ModelHandle:
         types are Drake's: ``revolute``, ``prismatic``, ``weld`` (fixed), ``ball_rpy``, ..."""
         plant = self._world.plant
         return [
-            (plant.get_joint(i).name(), plant.get_joint(i).type_name())
+            (shown_name(plant.get_joint(i).name()), plant.get_joint(i).type_name())
             for i in plant.GetJointIndices(self._world.model_instance(self.name))
             if plant.get_joint(i).type_name() not in ("quaternion_floating", "rpy_floating")
         ]

@@ -44,6 +44,26 @@ class PluginSpec:
     sensor: str = ""
 
 
+@dataclass(frozen=True)
+class CollisionPieces:
+    """A concave collision mesh of a static link, as convex prisms (see
+    :mod:`workbench.model.mesh_pieces`), registered on the link after Drake parsed the model.
+
+    Attributes:
+        link: The link's Drake name.
+        name: The ``<collision>``'s name.
+        pose: ``(x, y, z, roll, pitch, yaw)`` of the collision in the link frame, m and rad.
+        pieces: Each prism's points in the collision frame, (6, 3) arrays, m.
+        friction: Coulomb friction of the surface (``<surface><friction><ode><mu>``).
+    """
+
+    link: str
+    name: str
+    pose: tuple[float, float, float, float, float, float]
+    pieces: tuple[Any, ...]
+    friction: float = 1.0
+
+
 @dataclass
 class SimModel:
     """A model ready for Drake's parser, plus what the simulator applies itself.
@@ -60,12 +80,16 @@ class SimModel:
             link, i.e. the first link).
         static: Weld the model to the world where it is placed (URDF ``<static>``
             in a ``<gazebo>`` block, SDF ``<static>``).
+        static_links: Root links (Drake names) whose own model, nested in this one, is
+            static when this one is not, or free when this one is static.
         self_collide: Let the model's links collide with each other (Gazebo's
             ``selfCollide``; off by default, as in Gazebo).
         gravity: False when the model's ``<gravity>`` is off.
         pose: ``(x, y, z, roll, pitch, yaw)`` of the model frame relative to where
             it is placed (an SDF model's own ``<pose>``, removed from ``text``; the
             world composes placement and this pose), m and rad.
+        collision_pieces: Concave collision meshes of static links, as convex pieces
+            (taken out of ``text``).
         plugins: Model and sensor plugins declared in the model.
         sensors: ``<sensor>`` elements as XML text, with the link each belongs to.
         warnings: One line per thing that was changed so Drake can load it (e.g. an
@@ -80,9 +104,11 @@ class SimModel:
     package_map: dict[str, str] = field(default_factory=dict)
     root_link: str | None = None
     static: bool = False
+    static_links: dict[str, bool] = field(default_factory=dict)
     self_collide: bool = False
     gravity: bool = True
     pose: tuple[float, float, float, float, float, float] = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    collision_pieces: list[CollisionPieces] = field(default_factory=list)
     plugins: list[PluginSpec] = field(default_factory=list)
     sensors: list[tuple[str, str]] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)

@@ -22,6 +22,7 @@ from typing import Any
 import numpy as np
 
 from workbench.errors import SimulationError
+from workbench.model.sdf_names import drake_joint, shown_name
 
 #: Damping gain of a motor, N m s/rad (or N s/m): effectively rigid (see above).
 MOTOR_DAMPING = 1e4
@@ -39,14 +40,15 @@ def add_velocity_motors(plant: Any, instance: Any, motors: Mapping[str, float]) 
     from pydrake.multibody.tree import PdControllerGains
 
     actuated = {
-        plant.get_joint_actuator(i).joint().name(): plant.get_joint_actuator(i)
+        shown_name(plant.get_joint_actuator(i).joint().name()): plant.get_joint_actuator(i)
         for i in plant.GetJointActuatorIndices(instance)
     }
     name = plant.GetModelInstanceName(instance)
     for joint_name, limit in motors.items():
-        if not plant.HasJointNamed(joint_name, instance):
+        found = drake_joint(plant, joint_name, instance)
+        if found is None:
             raise SimulationError(f"model '{name}' has no joint '{joint_name}' for a motor")
-        joint = plant.GetJointByName(joint_name, instance)
+        joint = plant.GetJointByName(found, instance)
         if joint.num_velocities() != 1:
             raise SimulationError(f"joint '{joint_name}' of '{name}' is not a 1-dof joint")
         actuator = actuated.get(joint_name)
@@ -65,7 +67,8 @@ def fix_motor_targets(
     if not indices:
         return
     velocities = [
-        float(targets.get(plant.get_joint_actuator(i).joint().name(), 0.0)) for i in indices
+        float(targets.get(shown_name(plant.get_joint_actuator(i).joint().name()), 0.0))
+        for i in indices
     ]
     desired = np.concatenate([np.zeros(len(indices)), velocities])
     plant.get_desired_state_input_port(instance).FixValue(plant_context, desired)
@@ -78,5 +81,6 @@ def motor_efforts(plant: Any, plant_context: Any, instance: Any) -> dict[str, fl
         return {}
     values = plant.get_net_actuation_output_port(instance).Eval(plant_context)
     return {
-        plant.get_joint_actuator(i).joint().name(): float(values[k]) for k, i in enumerate(indices)
+        shown_name(plant.get_joint_actuator(i).joint().name()): float(values[k])
+        for k, i in enumerate(indices)
     }

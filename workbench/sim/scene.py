@@ -7,6 +7,7 @@ its diagram, so they take the plant and what to add, and keep no state.
 from __future__ import annotations
 
 import logging
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -14,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from workbench.errors import SimulationError
+from workbench.model.sdf_names import drake_joint, shown_name
 from workbench.sim.model_spec import SimModel
 from workbench.spatial import rigid_transform
 
@@ -108,7 +110,8 @@ def add_placed_model(plant: Any, placed: PlacedModel, scene_graph: Any = None) -
     """Parse ``placed.model`` into ``plant`` and put it at ``placed.X_WM``.
 
     Root bodies (those no joint of the model moves) are free bodies placed at
-    ``X_WM * X_MB``, or welded there when the model is static. ``-J`` joint
+    ``X_WM * X_MB``, or welded there when the model is static (a root of a nested
+    model follows that model's ``<static>``, ``model.static_links``). ``-J`` joint
     positions become the joints' default positions. With ``scene_graph``, the
     boxes of a free one-link model (a box, a cup: things that lie on surfaces) get
     corner points (:func:`add_corner_points`); robots stand on their wheels and
@@ -133,7 +136,9 @@ def add_placed_model(plant: Any, placed: PlacedModel, scene_graph: Any = None) -
     try:
         instances = parser.AddModelsFromString(model.text, model.format)
     except RuntimeError as error:
-        first = next((line for line in str(error).splitlines() if line.strip()), "")
+        first = shown_name(next((line for line in str(error).splitlines() if line.strip()), ""))
+        # Drake numbers the lines of the text it was given, not of the user's file
+        first = re.sub(r"<(literal|data)-string>(\.\w+)?:\d+: (error: )?", "", first)
         raise SimulationError(
             f"model '{model.name}' ({model.source or model.format}): Drake cannot load it: {first}"
         ) from None
@@ -142,6 +147,7 @@ def add_placed_model(plant: Any, placed: PlacedModel, scene_graph: Any = None) -
     if not instances:
         raise SimulationError(f"model '{model.name}' ({model.source}) defines no model")
     instance = instances[0]
+    _refuse_loops(plant, instance, model)
     X_pose = rigid_transform(model.pose[:3], rpy=model.pose[3:])
     X_WM = placed.X_WM.multiply(X_pose)
     roots = root_bodies(plant, instance)
@@ -151,20 +157,23 @@ def add_placed_model(plant: Any, placed: PlacedModel, scene_graph: Any = None) -
         if canonical is not None and body.index() == canonical.index():
             placed.X_MR = X_MB
         X_WB = X_WM.multiply(X_MB)
-        if model.static:
+        if model.static_links.get(body.name(), model.static):
             plant.WeldFrames(plant.world_frame(), body.body_frame(), X_WB)
         else:
             plant.SetDefaultFloatingBaseBodyPose(body, X_WB)
     for joint_name, value in placed.joint_positions.items():
-        if not plant.HasJointNamed(joint_name, instance):
+        found = drake_joint(plant, joint_name, instance)
+        if found is None:
             raise SimulationError(
                 f"model '{model.name}' has no joint '{joint_name}'",
                 hint="joints: " + ", ".join(joint_names(plant, instance)),
             )
-        joint = plant.GetJointByName(joint_name, instance)
+        joint = plant.GetJointByName(found, instance)
         if joint.num_positions() != 1:
             raise SimulationError(f"joint '{joint_name}' of '{model.name}' is not a 1-dof joint")
         joint.set_default_positions(np.array([float(value)]))
+    if model.collision_pieces:
+        add_collision_pieces(plant, instance, model)
     if placed.motors:
         from workbench.sim.motors import add_velocity_motors
 
@@ -175,6 +184,45 @@ def add_placed_model(plant: Any, placed: PlacedModel, scene_graph: Any = None) -
         add_corner_points(plant, scene_graph, instance)
     placed.instance = instance
     return instance
+
+
+def _refuse_loops(plant: Any, instance: Any, model: SimModel) -> None:
+    """Refuse, naming the joint, a model whose joints close a loop (Drake builds trees only;
+    it would fail later, at Finalize, without naming the model)."""
+    group: dict[int, int] = {}
+
+    def root(i: int) -> int:
+        while group.setdefault(i, i) != i:
+            group[i] = group[group[i]]
+            i = group[i]
+        return i
+
+    for index in plant.GetJointIndices(instance):
+        joint = plant.get_joint(index)
+        a, b = root(int(joint.parent_body().index())), root(int(joint.child_body().index()))
+        if a == b:
+            raise SimulationError(
+                f"model '{model.name}' ({model.source or model.format}): joint "
+                f"'{shown_name(joint.name())}' closes a loop of links, which Drake cannot "
+                "simulate (Gazebo can)",
+                hint="remove one joint of the loop",
+            )
+        group[a] = b
+
+
+def add_collision_pieces(plant: Any, instance: Any, model: SimModel) -> None:
+    """Register the convex pieces of the model's concave collision meshes on their links."""
+    from pydrake.geometry import Convex
+    from pydrake.multibody.plant import CoulombFriction
+
+    for item in model.collision_pieces:
+        body = plant.GetBodyByName(item.link, instance)
+        X_BC = rigid_transform(item.pose[:3], rpy=item.pose[3:])
+        friction = CoulombFriction(item.friction, item.friction)
+        for k, points in enumerate(item.pieces):
+            label = f"{item.name}_piece_{k}"
+            shape = Convex(np.asarray(points, dtype=float).T, label)
+            plant.RegisterCollisionGeometry(body, X_BC, shape, label, friction)
 
 
 def add_corner_points(plant: Any, scene_graph: Any, instance: Any) -> None:
@@ -249,5 +297,5 @@ def joint_names(plant: Any, instance: Any) -> list[str]:
             "quaternion_floating",
             "rpy_floating",
         ):
-            names.append(joint.name())
+            names.append(shown_name(joint.name()))
     return names

@@ -558,14 +558,18 @@ class SimServer:
     def _scoped(self, body_name: str) -> str:
         body = self.world.body(body_name)
         instance_name = self.world.plant.GetModelInstanceName(body.model_instance())
-        return f"{instance_name}::{body.name()}"
+        from workbench.model.sdf_names import scoped
+
+        return scoped(instance_name, body.name())
 
     def _joint_owner(self, joint_name: str) -> str:
         plant = self.world.plant
         model, _, joint = joint_name.rpartition("::")
         names = [model] if model else [n for n in self.world.model_names() if n != "ground_plane"]
         for name in names:
-            if plant.HasJointNamed(joint or joint_name, self.world.model_instance(name)):
+            from workbench.model.sdf_names import drake_joint
+
+            if drake_joint(plant, joint or joint_name, self.world.model_instance(name)):
                 return name
         raise SimulationError(f"joint '{joint_name}' not found")
 

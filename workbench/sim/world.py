@@ -33,6 +33,7 @@ from typing import Any
 import numpy as np
 
 from workbench.errors import SimulationError
+from workbench.model.sdf_names import drake_body, drake_joint, scoped, shown_name
 from workbench.sim.controllers import (
     Command,
     add_controller,
@@ -376,7 +377,11 @@ class World:
             return
         if meshcat is not None:
             self.meshcat = meshcat
-        self._assemble()
+        try:
+            self._assemble()
+        except RuntimeError as error:  # Drake's refusal at Finalize, as one line
+            first = next((line for line in str(error).splitlines() if line.strip()), "")
+            raise SimulationError(f"Drake cannot build the world: {shown_name(first)}") from None
         self.simulator.Initialize()
 
     def _assemble(self) -> None:
@@ -589,17 +594,21 @@ class World:
         self._require_built("body")
         plant = self.plant
         if "::" in scoped_name:
-            model, _, link = scoped_name.rpartition("::")
+            # the longest model name that starts it: links of nested models are A::B::link
+            owners = [m for m in self.model_names() if scoped_name.startswith(f"{m}::")]
+            model = max(owners, key=len) if owners else scoped_name.partition("::")[0]
+            link = scoped_name[len(model) + 2 :]
             instance = self.model_instance(model)
-            if not plant.HasBodyNamed(link, instance):
+            found = drake_body(plant, link, instance)
+            if found is None:
                 raise SimulationError(f"model '{model}' has no link '{link}'")
-            return plant.GetBodyByName(link, instance)
+            return plant.GetBodyByName(found, instance)
         from pydrake.multibody.tree import BodyIndex
 
         matches = [
             plant.get_body(BodyIndex(index))
             for index in range(1, plant.num_bodies())
-            if plant.get_body(BodyIndex(index)).name() == scoped_name
+            if shown_name(plant.get_body(BodyIndex(index)).name()) == scoped_name
         ]
         if len(matches) != 1:
             raise SimulationError(
@@ -718,7 +727,7 @@ class World:
                 body = plant.get_body(index)
                 states.append(
                     (
-                        f"{name}::{body.name()}",
+                        scoped(name, body.name()),
                         plant.EvalBodyPoseInWorld(plant_context, body),
                         plant.EvalBodySpatialVelocityInWorld(plant_context, body),
                     )
@@ -824,14 +833,15 @@ class World:
     def joint(self, model: str, joint_name: str) -> Any:
         """A joint of a model by name."""
         instance = self.model_instance(model)
-        if not self.plant.HasJointNamed(joint_name, instance):
+        found = drake_joint(self.plant, joint_name, instance)
+        if found is None:
             from workbench.sim.scene import joint_names
 
             raise SimulationError(
                 f"model '{model}' has no joint '{joint_name}'",
                 hint="joints: " + (", ".join(joint_names(self.plant, instance)) or "none"),
             )
-        return self.plant.GetJointByName(joint_name, instance)
+        return self.plant.GetJointByName(found, instance)
 
     def reset(self, *, time: bool = True) -> None:
         """Every model back to where it was spawned, at rest (``time``: the clock to 0 too)."""
@@ -1088,7 +1098,7 @@ class World:
         body = self.plant.GetBodyFromFrameId(inspector.GetFrameId(geometry_id))
         if body is None or body.index() == self.plant.world_body().index():
             return inspector.GetName(geometry_id)
-        return body.name()
+        return shown_name(body.name())
 
     def _entry(self, robot_name: str) -> _RobotEntry:
         if robot_name not in self._robots:

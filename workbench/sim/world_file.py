@@ -5,15 +5,22 @@ name of a shipped world in ``mapping/worlds`` (``empty``; Gazebo's
 ``worlds/empty.world`` means the same). Read from it:
 
 * ``<include><uri>model://NAME</uri></include>`` with optional ``<name>``,
-  ``<pose>`` and ``<static>``: ``ground_plane`` and ``sun`` are built in (the
-  ground and, ignored, the light); other names are looked up as
-  :mod:`workbench.sim.model_paths` says. An include's ``<pose>`` replaces the
-  model's own, as in Gazebo.
-* ``<model>`` elements written in the world.
+  ``<pose>``, ``<static>`` and ``<plugin>``: ``ground_plane`` and ``sun`` are
+  built in (the ground and, ignored, the light); other names (``NAME`` or
+  ``FOLDER/NAME``) are looked up as :mod:`workbench.model.gazebo_models` says.
+  An include's ``<pose>`` replaces the model's own, as in Gazebo.
+* ``<model>`` elements written in the world; models inside models are merged
+  into them as Gazebo names them (:mod:`workbench.model.sdf_nesting`). A model
+  called ``ground_plane`` whose shapes are planes facing up (every world saved
+  from Gazebo has one) is the built-in ground.
+* The first ``<state>`` (worlds saved from Gazebo): the poses and joint angles
+  it holds are applied as Gazebo applies them on load, its ``<insertions>``
+  are added and its ``<deletions>`` removed (:mod:`workbench.sim.world_state`).
 * ``<plugin>`` elements of the world (world plugins).
 * ``<physics><max_step_size>`` and ``<real_time_factor>``, and ``<gravity>``.
 
-Everything else (lights, scene, GUI camera) is not simulated and is skipped.
+``<population>`` is refused in one line (write the models out instead).
+Everything else (lights, scene, GUI camera, actors) is not simulated and is skipped.
 """
 
 from __future__ import annotations
@@ -24,7 +31,7 @@ from pathlib import Path
 
 from lxml import etree
 
-from workbench.errors import SimulationError
+from workbench.errors import ModelError, SimulationError
 from workbench.sim.model_spec import PluginSpec, SimModel
 
 Pose = tuple[float, float, float, float, float, float]
@@ -41,10 +48,12 @@ class Physics:
 
 @dataclass
 class WorldModel:
-    """A model of the world file and where it goes (x, y, z, roll, pitch, yaw; m, rad)."""
+    """A model of the world file, where it goes (x, y, z, roll, pitch, yaw; m, rad) and the
+    positions of its 1-dof joints (rad or m, by Gazebo joint name)."""
 
     model: SimModel
     pose: Pose = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    joint_positions: dict[str, float] = field(default_factory=dict)
 
 
 @dataclass
@@ -55,6 +64,7 @@ class WorldFile:
     path: Path | None
     physics: Physics = field(default_factory=Physics)
     ground_plane: bool = False
+    ground_z: float = 0.0
     models: list[WorldModel] = field(default_factory=list)
     plugins: list[PluginSpec] = field(default_factory=list)
 
@@ -98,14 +108,14 @@ def load_world(name_or_path: str | os.PathLike[str]) -> WorldFile:
             naming the file and line.
     """
     path = find_world(name_or_path)
+    from workbench.model.sdf_xml import read_sdf_text
+
     try:
-        root = etree.parse(str(path)).getroot()
-    except etree.XMLSyntaxError as error:
-        raise SimulationError(
-            f"not an XML world file: {error.msg}", path=path, line=error.lineno
-        ) from None
-    except OSError as error:
-        raise SimulationError(f"cannot read the world file: {error.strerror}", path=path) from None
+        root = read_sdf_text(path)
+    except ModelError as error:
+        reason = error.message.removeprefix("not well-formed XML: ")
+        message = f"not an XML world file: {reason}" if reason != error.message else reason
+        raise SimulationError(message, path=path, line=error.line) from None
     world = root.find("world") if root.tag == "sdf" else (root if root.tag == "world" else None)
     if world is None:
         raise SimulationError(
@@ -115,22 +125,25 @@ def load_world(name_or_path: str | os.PathLike[str]) -> WorldFile:
         )
     result = WorldFile(name=world.get("name", path.stem), path=path)
     result.physics = _physics(world, path)
+    version = root.get("version")
     for element in world:
         if not isinstance(element.tag, str):
             continue
         if element.tag == "include":
             _include(element, result, path)
         elif element.tag == "model":
-            from workbench.sim.gazebo_sdf import sim_model_from_element
-
-            model = sim_model_from_element(
-                element,
-                name=None,
-                source=str(path),
-                base_dir=path.parent,
-                version=root.get("version"),
+            ground = ground_height(element)
+            if ground is not None:
+                result.ground_plane, result.ground_z = True, ground
+                continue
+            result.models.append(WorldModel(world_model(element, path, version)))
+        elif element.tag == "population":
+            raise SimulationError(
+                f"<population> '{element.get('name', '')}' is not supported",
+                path=path,
+                line=element.sourceline,
+                hint="write the models it would make into the world as <model> or <include>",
             )
-            result.models.append(WorldModel(model))
         elif element.tag == "plugin":
             result.plugins.append(
                 PluginSpec(
@@ -142,6 +155,11 @@ def load_world(name_or_path: str | os.PathLike[str]) -> WorldFile:
                     source=f"{path}:{element.sourceline}",
                 )
             )
+    state = world.find("state")
+    if state is not None:
+        from workbench.sim.world_state import apply_state
+
+        apply_state(state, result, path, version)
     names = [m.model.name for m in result.models]
     duplicates = {n for n in names if names.count(n) > 1}
     if duplicates:
@@ -149,35 +167,64 @@ def load_world(name_or_path: str | os.PathLike[str]) -> WorldFile:
     return result
 
 
+def world_model(element: etree._Element, path: Path, version: str | None) -> SimModel:
+    """The :class:`SimModel` of a ``<model>`` written in the world file ``path``."""
+    from workbench.sim.gazebo_sdf import sim_model_from_element
+
+    return sim_model_from_element(
+        element, name=None, source=str(path), base_dir=path.parent, version=version
+    )
+
+
+def ground_height(model: etree._Element) -> float | None:
+    """The height of the ground a world's ``ground_plane`` model stands for, or None when the
+    model is something else (not static, shapes that are not planes facing up, tilted)."""
+    if model.get("name") != "ground_plane" or model.find("model") is not None:
+        return None
+    if (model.findtext("static") or "").strip().lower() not in ("1", "true"):
+        return None
+    geometries = model.findall("link/collision/geometry") + model.findall("link/visual/geometry")
+    if not geometries or any(g.find("plane") is None for g in geometries):
+        return None
+    z = 0.0
+    poses = [model.find("pose"), *model.findall("link/pose"), *model.findall("link/collision/pose")]
+    for pose in (p for p in poses if p is not None):
+        try:
+            values = [float(v) for v in (pose.text or "").split()] or [0.0] * 6
+        except ValueError:
+            return None
+        if len(values) != 6 or any(abs(v) > 1e-9 for v in values[3:]) or pose.get("relative_to"):
+            return None
+        z += values[2]
+    for plane in model.iter("plane"):
+        normal = (plane.findtext("normal") or "0 0 1").split()
+        if [n.strip() for n in normal] not in (["0", "0", "1"], ["0.0", "0.0", "1.0"]):
+            return None
+    return z
+
+
 def _include(element: etree._Element, result: WorldFile, path: Path) -> None:
-    from workbench.sim.model_paths import BUILT_IN_MODELS, find_model_file
+    from workbench.model.gazebo_models import BUILT_IN_MODELS, uri_path
+    from workbench.model.sdf_nesting import include_file
+    from workbench.sim.model_spec import plugin_spec
 
     uri = (element.findtext("uri") or "").strip()
-    if not uri.startswith("model://"):
-        raise SimulationError(
-            f"<include> needs <uri>model://NAME</uri>, got '{uri}'",
-            path=path,
-            line=element.sourceline,
-        )
-    name = uri[len("model://") :].strip("/")
+    name = uri_path(uri) if uri.startswith("model://") else None
     if name == "ground_plane":
         result.ground_plane = True
         return
     if name in BUILT_IN_MODELS:
         return
-    file = find_model_file(name)
-    if file is None:
-        from workbench.sim.model_paths import model_search_path
-
-        folders = ", ".join(str(p) for p in model_search_path())
+    try:
+        file = include_file(uri, path, element.sourceline)
+    except ModelError as error:
         raise SimulationError(
-            f"cannot resolve {uri}: no model '{name}'",
-            path=path,
-            line=element.sourceline,
-            hint=f"looked in {folders} and urdf/; add folders to GAZEBO_MODEL_PATH",
-        )
+            error.message, path=error.path, line=error.line, hint=error.hint
+        ) from None
     new_name = (element.findtext("name") or "").strip() or None
     model = _read_model(file, new_name)
+    for plugin in element.findall("plugin"):
+        model.plugins.append(plugin_spec(plugin, "model", None, file.parent, str(path)))
     static = element.find("static")
     if static is not None:
         model.static = (static.text or "").strip().lower() in ("1", "true")
