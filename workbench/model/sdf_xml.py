@@ -37,7 +37,9 @@ def parse_sdf_text(text: str, path: Path | None = None) -> Any:
     try:
         return etree.fromstring(data, strict)
     except etree.XMLSyntaxError as error:
-        if {entry.type_name for entry in error.error_log} <= _FORGIVEN:
+        # the parser's own log holds this parse's errors only (the exception's may hold
+        # earlier ones of the thread)
+        if {entry.type_name for entry in strict.error_log} <= _FORGIVEN:
             lenient = etree.XMLParser(
                 resolve_entities=False, no_network=True, huge_tree=True, recover=True
             )
