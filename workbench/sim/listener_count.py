@@ -29,3 +29,7 @@ class ListenerCount:
             count = publisher.get_num_connections()
             self._counts[publisher.topic] = (now, count)
         return count
+
+    def forget(self) -> None:
+        """Ask the bus again on the next call (a subscriber was just added)."""
+        self._counts.clear()
