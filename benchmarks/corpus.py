@@ -4,24 +4,29 @@ Point it at a folder of ROS 1 packages (git clones of turtlebot3, universal_robo
 moveit_resources ...) and, optionally, folders of Gazebo models::
 
     python benchmarks/corpus.py --root ~/catkin_ws/src --models ~/gazebo_models \\
-        [--json OUT] [--timeout S] [--only KIND[,KIND]] [--jobs 1|2] [--sample-models N]
+        [--json OUT] [--timeout S] [--only KIND[,KIND]] [--jobs 1|2] [--sample-models N] \\
+        [--env NAME=VALUE ...]
 
 Each file runs the workbench command of its kind (see :mod:`corpus_files`):
 ``launch --dry-run``, ``check`` and ``graph``, ``sim`` (one simulated second,
 headless), ``check`` of a Gazebo model, ``setup --srdf --dry-run``, ``map show``,
 ``bag info`` and ``rviz -d``, each in a child process with a timeout, with
-``ROS_PACKAGE_PATH`` the root, ``GAZEBO_MODEL_PATH`` the model folders and
-``TURTLEBOT3_MODEL=burger``, from a scratch folder, with a fresh workbench cache
-(``--cache DIR`` reuses one). ROS's own tools decide what
-ROS accepts where they are installed (Debian's python3-roslaunch, urdfdom's
-check_urdf and urdf_to_graphviz, libsdformat, python3-rosbag; see
-:mod:`corpus_oracles`). Each command ends in one class:
+``ROS_PACKAGE_PATH`` the root, ``GAZEBO_MODEL_PATH`` the model folders,
+``TURTLEBOT3_MODEL=burger`` and ``LDS_MODEL=LDS-01`` unless set (``--env`` sets any
+variable), from a scratch folder, with a fresh workbench cache (``--cache DIR`` reuses
+one). ROS's own tools decide what ROS accepts where they are installed (Debian's
+python3-roslaunch, urdfdom's check_urdf and urdf_to_graphviz, libsdformat,
+python3-rosbag; see :mod:`corpus_oracles`). A launch file's plan is compared with
+roslaunch's by :mod:`launch_compare`. Each command ends in one class:
 
 * works / works with warnings: workbench accepts the file and, where ROS's tool
-  accepts it too, gives the same result (launch: the same nodes, args, remappings
-  and parameters; URDF: the same tree and graph);
+  accepts it too, gives the same result (launch: the same nodes with every field
+  roslaunch resolves, parameters, rosparam commands and machines; URDF: the same tree
+  and graph);
 * correct refusal: workbench and ROS's tool both refuse it ("needs args": a
   launch file whose required args were not given);
+* refusal by design: workbench refuses on purpose what ROS accepts (a ``<machine>``
+  on another computer; see the README);
 * refusal, no oracle: workbench refuses and no ROS tool here can say otherwise;
 * wrong: a different result, a refusal of what ROS accepts ("refused, roslaunch
   accepts"), or accepting what ROS refuses;
@@ -103,6 +108,7 @@ _SHORT = {
     "works": "works",
     "works with warnings": "warn",
     "correct refusal": "refuse ok",
+    "refusal by design": "by design",
     "refusal, no oracle": "refuse ?",
     "wrong": "wrong",
     "traceback": "traceback",
@@ -216,6 +222,13 @@ def parse_args(argv: Sequence[str] | None) -> argparse.Namespace:
         "--models", action="append", type=Path, default=[], help="a Gazebo model folder (repeat)"
     )
     parser.add_argument("--json", type=Path, help="write the results here")
+    parser.add_argument(
+        "--env",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="an environment variable for every command, workbench's and ROS's (repeat)",
+    )
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per command")
     parser.add_argument(
         "--only", help=f"comma-separated kinds to run, of: {', '.join(KINDS)}", default=None
@@ -238,6 +251,10 @@ def parse_args(argv: Sequence[str] | None) -> argparse.Namespace:
     for folder in args.models:
         if not folder.is_dir():
             parser.error(f"--models {folder} is not a folder")
+    bad = [pair for pair in args.env if "=" not in pair or pair.startswith("=")]
+    if bad:
+        parser.error(f"--env {bad[0]} is not NAME=VALUE")
+    args.env = dict(pair.split("=", 1) for pair in args.env)
     return args
 
 
@@ -264,6 +281,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             rosbag=ros_python is not None and have_python_module(ROS_PYTHON, "rosbag"),
             oracle_packages=oracle_packages(root, work),
             cache=args.cache or work / "cache",
+            environment=args.env,
         )
         items = sample(discover(root, models, args.only), "model", args.sample_models)
         start = time.perf_counter()
