@@ -32,7 +32,8 @@ roslaunch's by :mod:`launch_compare`. Each command ends in one class:
   accepts"), or accepting what ROS refuses;
 * traceback: a Python traceback (or workbench's internal-error guard);
 * hang: no answer within the timeout, twice (the second time with twice as long);
-* crash: killed by a signal (an abort).
+* crash: killed by a signal (an abort), or stopped by SIGINT or SIGTERM from outside
+  (twice).
 
 Prints one table per kind with the share of the files ROS accepts that run (a
 file without an oracle counts as accepted), then every file that does not work
@@ -52,7 +53,7 @@ from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-from corpus_files import KINDS, Item, discover, package_index
+from corpus_files import KINDS, Item, discover
 from corpus_jobs import JOBS, Context, Result
 from corpus_oracles import build_sdf_check, have_python_module
 from corpus_run import CLASSES, CRASH, HANG, RUNS, TRACEBACK, WRONG
@@ -62,9 +63,6 @@ ROOT = Path(__file__).resolve().parent.parent
 SEED = 0  # nothing here is random; recorded for uniformity with the other benchmarks
 #: Debian's Python, where python3-roslaunch and python3-rosbag live.
 ROS_PYTHON = "/usr/bin/python3"
-#: Packages workbench ships (examples/packages) that stand in, for roslaunch, for the ones
-#: a ROS installation has (gazebo_ros, xacro) when the root does not have them.
-SHIPPED_PACKAGES = ROOT / "examples" / "packages"
 SKIPPED = "skipped"
 #: Classes that make the run fail (exit status 1).
 FAILURES = (WRONG, TRACEBACK, HANG, CRASH)
@@ -181,17 +179,14 @@ def sample(items: list[Item], kind: str, count: int | None) -> list[Item]:
     return [i for i in items if i.kind != kind or id(i) in keep]
 
 
-def oracle_packages(root: Path, work: Path) -> list[Path]:
-    """A folder of links to the packages workbench ships that the root does not have."""
-    if not SHIPPED_PACKAGES.is_dir():
-        return []
-    have = package_index(root)
-    shim = work / "shipped-packages"
-    shim.mkdir(exist_ok=True)
-    for name, folder in package_index(SHIPPED_PACKAGES).items():
-        if name not in have:
-            (shim / name).symlink_to(folder, target_is_directory=True)
-    return [shim]
+def oracle_packages() -> list[Path]:
+    """The folders of the packages workbench ships (its stand-ins for gazebo_ros, xacro
+    ...), where workbench itself finds them, for roslaunch's ``ROS_PACKAGE_PATH`` after the
+    root: both then find them at the same path, and both let the root's own package of the
+    same name win (the first one found does, in rospkg and in workbench)."""
+    from workbench.ros_packages import shipped_packages
+
+    return list(dict.fromkeys(folder for folder, _origin in shipped_packages().values()))
 
 
 def run_all(
@@ -279,7 +274,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             urdf_to_graphviz=shutil.which("urdf_to_graphviz"),
             sdf_check=build_sdf_check(work) if kinds & {"world", "model"} else None,
             rosbag=ros_python is not None and have_python_module(ROS_PYTHON, "rosbag"),
-            oracle_packages=oracle_packages(root, work),
+            oracle_packages=oracle_packages(),
             cache=args.cache or work / "cache",
             environment=args.env,
         )

@@ -24,6 +24,7 @@ from corpus_oracles import ROSBAG_PROBE, XACRO_PROBE
 from corpus_run import (
     NO_ORACLE,
     REFUSAL,
+    STOPPED_STATUSES,
     Outcome,
     Runner,
     Verdict,
@@ -95,8 +96,9 @@ class Context:
         urdf_to_graphviz: urdfdom's ``urdf_to_graphviz``, or None.
         sdf_check: The compiled libsdformat checker, or None.
         rosbag: ``ros_python`` also imports ``rosbag``.
-        oracle_packages: Extra ``ROS_PACKAGE_PATH`` entries for roslaunch: the packages
-            workbench ships that stand in for ones installed with ROS (gazebo_ros, xacro).
+        oracle_packages: Extra ``ROS_PACKAGE_PATH`` entries for roslaunch, after the root:
+            the packages workbench ships, which stand in for ones installed with ROS
+            (gazebo_ros, xacro), where workbench finds them.
         retry_hangs: Run a command that timed out once more with twice the time
             before calling it hung (a loaded machine is slow, not stuck).
         cache: workbench's cache folder (``WORKBENCH_CACHE_DIR``); None keeps the user's.
@@ -155,10 +157,13 @@ class Context:
         return text
 
     def ours(self, argv: list[str]) -> Outcome:
-        """Run a workbench command (once more with twice the time if it timed out)."""
+        """Run a workbench command (once more with twice the time if it timed out, and once
+        more if a signal from outside stopped it)."""
         outcome = self.runner(argv, self.env(), self.work, self.timeout)
         if outcome.timed_out and self.retry_hangs:
             outcome = self.runner(argv, self.env(), self.work, 2 * self.timeout)
+        elif outcome.returncode in STOPPED_STATUSES:
+            outcome = self.runner(argv, self.env(), self.work, self.timeout)
         return outcome
 
     def tool(self, argv: list[str], env: dict[str, str] | None = None) -> Outcome:

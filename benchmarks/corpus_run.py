@@ -34,6 +34,9 @@ RUNS = (WORKS, WARNINGS)
 
 #: Exit status of workbench's top-level guard after an unexpected exception (a bug).
 INTERNAL_ERROR_STATUS = 70
+#: Exit statuses of a workbench command stopped by SIGINT or SIGTERM (128 + the signal).
+#: This benchmark stops its children with SIGKILL only, so these come from outside.
+STOPPED_STATUSES = {128 + signal.SIGINT: "SIGINT", 128 + signal.SIGTERM: "SIGTERM"}
 #: Longest stdout/stderr kept per command, characters.
 KEEP_CHARS = 200_000
 
@@ -136,6 +139,9 @@ def failure(outcome: Outcome) -> tuple[str, str] | None:
         except ValueError:
             name = f"signal {-outcome.returncode}"
         return CRASH, f"killed by {name}: {last_line(outcome.stderr) or last_line(outcome.stdout)}"
+    if outcome.returncode in STOPPED_STATUSES:
+        name = STOPPED_STATUSES[outcome.returncode]
+        return CRASH, f"stopped by {name} from outside (exit {outcome.returncode})"
     if _TRACEBACK in outcome.text:
         return TRACEBACK, traceback_line(outcome.text)
     if outcome.returncode == INTERNAL_ERROR_STATUS and "internal error" in outcome.stderr:

@@ -350,6 +350,7 @@ class FakeTools:
         cli = {
             "hangs": run.Outcome(None, "", "", timed_out=True, seconds=timeout),
             "aborts": run.Outcome(-6, "", "terminate called after throwing an instance\n"),
+            "stopped": run.Outcome(143, "", ""),  # workbench stopped by a SIGTERM
             "traceback": run.Outcome(
                 1,
                 "",
@@ -396,6 +397,7 @@ def test_every_class_from_injected_commands(corpus, tmp_path) -> None:  # type: 
         "internal": (run.TRACEBACK, "internal error"),
         "hangs": (run.HANG, "no answer within"),
         "aborts": (run.CRASH, "killed by SIGABRT"),
+        "stopped": (run.CRASH, "stopped by SIGTERM from outside (exit 143)"),
     }
     for name, (cls, message) in expected.items():
         (result,) = jobs.run_launch(ctx, files.Item("launch", tmp_path / f"{name}.launch"))
@@ -407,6 +409,9 @@ def test_every_class_from_injected_commands(corpus, tmp_path) -> None:  # type: 
     # A hang is given a second chance with twice the time before it counts.
     hung = [call for call in fake.calls if call[-1].endswith("hangs.launch") and "launch" in call]
     assert len(hung) == 2
+    # So is a command that a signal from outside stopped.
+    stopped = [c for c in fake.calls if c[-1].endswith("stopped.launch") and "launch" in c]
+    assert len(stopped) == 2
 
     # Without roslaunch, a refusal cannot be judged.
     ctx.ros_python = None
@@ -576,6 +581,36 @@ def test_launch_files_resolve_as_roslaunch_resolves_them(corpus, tree, tmp_path)
     assert changed.cls == run.WRONG and "args" in changed.message, changed
 
 
+def test_roslaunch_finds_the_stand_ins_where_workbench_does(corpus, tree, tmp_path) -> None:  # type: ignore[no-untyped-def]
+    run, jobs, files = corpus["run"], corpus["jobs"], corpus["files"]
+    ctx = real_context(
+        corpus,
+        tree,
+        tmp_path,
+        ros_python=ros_python("roslaunch", "python3-roslaunch"),
+        oracle_packages=corpus["main"].oracle_packages(),
+    )
+    root, _ = tree
+    package(root, "gazebo_ros")  # the user's own copy shadows workbench's stand-in
+    launch = write(
+        root / "demo_bringup" / "launch" / "finds.launch",
+        """
+        <launch>
+          <param name="gazebo_ros" value="$(find gazebo_ros)"/>
+          <param name="robot_description"
+                 command="$(find xacro)/xacro $(find demo_description)/urdf/demo.urdf"/>
+        </launch>
+        """,
+    )
+    # Both find the user's gazebo_ros in the root and workbench's xacro at the same path
+    # (a different path would differ in the parameters).
+    (finds,) = jobs.run_launch(ctx, files.Item("launch", launch))
+    assert (finds.cls, finds.ros) == (run.WORKS, "accepts"), finds
+    ctx.oracle_packages = []  # without the stand-ins roslaunch does not know xacro
+    (alone,) = jobs.run_launch(ctx, files.Item("launch", launch))
+    assert alone.cls == run.WRONG and "ResourceNotFound: xacro" in alone.message, alone
+
+
 def test_descriptions_check_and_graph_as_urdfdom_does(
     corpus, tree, tmp_path, require_program
 ) -> None:  # type: ignore[no-untyped-def]
@@ -644,12 +679,10 @@ def test_the_script_prints_the_table_and_writes_json(corpus, tree, tmp_path, cap
 
 def test_commands_see_the_packages_the_models_and_their_own_cache(corpus, tree, tmp_path) -> None:  # type: ignore[no-untyped-def]
     root, models = tree
-    package(root, "gazebo_ros")  # the user's own copy shadows workbench's stand-in
     work = tmp_path / "work"
     work.mkdir()
-    shim = corpus["main"].oracle_packages(root, work)
-    linked = {path.name for folder in shim for path in folder.iterdir()}
-    assert "xacro" in linked and "gazebo_ros" not in linked
+    shim = corpus["main"].oracle_packages()
+    assert "xacro" in {folder.name for folder in shim}
     ctx = corpus["jobs"].Context(
         root=root,
         models=[models],
@@ -661,7 +694,7 @@ def test_commands_see_the_packages_the_models_and_their_own_cache(corpus, tree, 
     )
     ours, ros = ctx.env(), ctx.env(oracle=True)
     assert ours["ROS_PACKAGE_PATH"] == str(root)
-    assert ros["ROS_PACKAGE_PATH"] == os.pathsep.join([str(root), str(shim[0])])
+    assert ros["ROS_PACKAGE_PATH"] == os.pathsep.join(map(str, [root, *shim]))
     assert ours["GAZEBO_MODEL_PATH"] == ros["GAZEBO_MODEL_PATH"] == str(models)
     assert ours["WORKBENCH_MASTER_URI"] == "inproc"
     assert ours["WORKBENCH_CACHE_DIR"] == str(work / "c")
