@@ -4,30 +4,36 @@ Point it at a folder of ROS 1 packages (git clones of turtlebot3, universal_robo
 moveit_resources ...) and, optionally, folders of Gazebo models::
 
     python benchmarks/corpus.py --root ~/catkin_ws/src --models ~/gazebo_models \\
-        [--json OUT] [--timeout S] [--only KIND[,KIND]] [--jobs 1|2] [--sample-models N]
+        [--json OUT] [--timeout S] [--only KIND[,KIND]] [--jobs 1|2] [--sample-models N] \\
+        [--env NAME=VALUE ...]
 
 Each file runs the workbench command of its kind (see :mod:`corpus_files`):
 ``launch --dry-run``, ``check`` and ``graph``, ``sim`` (one simulated second,
 headless), ``check`` of a Gazebo model, ``setup --srdf --dry-run``, ``map show``,
 ``bag info`` and ``rviz -d``, each in a child process with a timeout, with
-``ROS_PACKAGE_PATH`` the root, ``GAZEBO_MODEL_PATH`` the model folders and
-``TURTLEBOT3_MODEL=burger``, from a scratch folder, with a fresh workbench cache
-(``--cache DIR`` reuses one). ROS's own tools decide what
-ROS accepts where they are installed (Debian's python3-roslaunch, urdfdom's
-check_urdf and urdf_to_graphviz, libsdformat, python3-rosbag; see
-:mod:`corpus_oracles`). Each command ends in one class:
+``ROS_PACKAGE_PATH`` the root, ``GAZEBO_MODEL_PATH`` the model folders,
+``TURTLEBOT3_MODEL=burger`` and ``LDS_MODEL=LDS-01`` unless set (``--env`` sets any
+variable), from a scratch folder, with a fresh workbench cache (``--cache DIR`` reuses
+one). ROS's own tools decide what ROS accepts where they are installed (Debian's
+python3-roslaunch, urdfdom's check_urdf and urdf_to_graphviz, libsdformat,
+python3-rosbag; see :mod:`corpus_oracles`). A launch file's plan is compared with
+roslaunch's by :mod:`launch_compare`. Each command ends in one class:
 
 * works / works with warnings: workbench accepts the file and, where ROS's tool
-  accepts it too, gives the same result (launch: the same nodes, args, remappings
-  and parameters; URDF: the same tree and graph);
+  accepts it too, gives the same result (launch: the same nodes with every field
+  roslaunch resolves, parameters, rosparam commands and machines; URDF: the same tree
+  and graph);
 * correct refusal: workbench and ROS's tool both refuse it ("needs args": a
   launch file whose required args were not given);
+* refusal by design: workbench refuses on purpose what ROS accepts (a ``<machine>``
+  on another computer; see the README);
 * refusal, no oracle: workbench refuses and no ROS tool here can say otherwise;
 * wrong: a different result, a refusal of what ROS accepts ("refused, roslaunch
   accepts"), or accepting what ROS refuses;
 * traceback: a Python traceback (or workbench's internal-error guard);
 * hang: no answer within the timeout, twice (the second time with twice as long);
-* crash: killed by a signal (an abort).
+* crash: killed by a signal (an abort), or stopped by SIGINT or SIGTERM from outside
+  (twice).
 
 Prints one table per kind with the share of the files ROS accepts that run (a
 file without an oracle counts as accepted), then every file that does not work
@@ -47,7 +53,7 @@ from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-from corpus_files import KINDS, Item, discover, package_index
+from corpus_files import KINDS, Item, discover
 from corpus_jobs import JOBS, Context, Result
 from corpus_oracles import build_sdf_check, have_python_module
 from corpus_run import CLASSES, CRASH, HANG, RUNS, TRACEBACK, WRONG
@@ -57,9 +63,6 @@ ROOT = Path(__file__).resolve().parent.parent
 SEED = 0  # nothing here is random; recorded for uniformity with the other benchmarks
 #: Debian's Python, where python3-roslaunch and python3-rosbag live.
 ROS_PYTHON = "/usr/bin/python3"
-#: Packages workbench ships (examples/packages) that stand in, for roslaunch, for the ones
-#: a ROS installation has (gazebo_ros, xacro) when the root does not have them.
-SHIPPED_PACKAGES = ROOT / "examples" / "packages"
 SKIPPED = "skipped"
 #: Classes that make the run fail (exit status 1).
 FAILURES = (WRONG, TRACEBACK, HANG, CRASH)
@@ -103,6 +106,7 @@ _SHORT = {
     "works": "works",
     "works with warnings": "warn",
     "correct refusal": "refuse ok",
+    "refusal by design": "by design",
     "refusal, no oracle": "refuse ?",
     "wrong": "wrong",
     "traceback": "traceback",
@@ -175,17 +179,14 @@ def sample(items: list[Item], kind: str, count: int | None) -> list[Item]:
     return [i for i in items if i.kind != kind or id(i) in keep]
 
 
-def oracle_packages(root: Path, work: Path) -> list[Path]:
-    """A folder of links to the packages workbench ships that the root does not have."""
-    if not SHIPPED_PACKAGES.is_dir():
-        return []
-    have = package_index(root)
-    shim = work / "shipped-packages"
-    shim.mkdir(exist_ok=True)
-    for name, folder in package_index(SHIPPED_PACKAGES).items():
-        if name not in have:
-            (shim / name).symlink_to(folder, target_is_directory=True)
-    return [shim]
+def oracle_packages() -> list[Path]:
+    """The folders of the packages workbench ships (its stand-ins for gazebo_ros, xacro
+    ...), where workbench itself finds them, for roslaunch's ``ROS_PACKAGE_PATH`` after the
+    root: both then find them at the same path, and both let the root's own package of the
+    same name win (the first one found does, in rospkg and in workbench)."""
+    from workbench.ros_packages import shipped_packages
+
+    return list(dict.fromkeys(folder for folder, _origin in shipped_packages().values()))
 
 
 def run_all(
@@ -216,6 +217,13 @@ def parse_args(argv: Sequence[str] | None) -> argparse.Namespace:
         "--models", action="append", type=Path, default=[], help="a Gazebo model folder (repeat)"
     )
     parser.add_argument("--json", type=Path, help="write the results here")
+    parser.add_argument(
+        "--env",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="an environment variable for every command, workbench's and ROS's (repeat)",
+    )
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per command")
     parser.add_argument(
         "--only", help=f"comma-separated kinds to run, of: {', '.join(KINDS)}", default=None
@@ -238,6 +246,10 @@ def parse_args(argv: Sequence[str] | None) -> argparse.Namespace:
     for folder in args.models:
         if not folder.is_dir():
             parser.error(f"--models {folder} is not a folder")
+    bad = [pair for pair in args.env if "=" not in pair or pair.startswith("=")]
+    if bad:
+        parser.error(f"--env {bad[0]} is not NAME=VALUE")
+    args.env = dict(pair.split("=", 1) for pair in args.env)
     return args
 
 
@@ -262,8 +274,9 @@ def main(argv: Sequence[str] | None = None) -> int:
             urdf_to_graphviz=shutil.which("urdf_to_graphviz"),
             sdf_check=build_sdf_check(work) if kinds & {"world", "model"} else None,
             rosbag=ros_python is not None and have_python_module(ROS_PYTHON, "rosbag"),
-            oracle_packages=oracle_packages(root, work),
+            oracle_packages=oracle_packages(),
             cache=args.cache or work / "cache",
+            environment=args.env,
         )
         items = sample(discover(root, models, args.only), "model", args.sample_models)
         start = time.perf_counter()

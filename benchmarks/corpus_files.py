@@ -2,7 +2,7 @@
 
 Kinds (each with the workbench command benchmarks/corpus.py runs on it):
 
-* ``launch``: ``*.launch`` and ``*.xml`` whose root element is ``<launch>``;
+* ``launch``: ``*.launch``, and ``*.xml`` and ``*.machine`` whose root element is ``<launch>``;
 * ``description``: ``*.urdf`` and ``*.xacro`` whose root element is ``<robot>``;
 * ``world``: ``*.world``;
 * ``model``: each Gazebo model folder (one with a ``model.config``), the SDF file
@@ -162,7 +162,9 @@ def discover(
         if name == "model.config":
             model_folders.append(path.parent)
         elif name.endswith(".launch") or (
-            name.endswith(".xml") and name != "package.xml" and root_tag(path) == "launch"
+            name.endswith((".xml", ".machine"))
+            and name != "package.xml"
+            and root_tag(path) == "launch"
         ):
             items.append(Item("launch", path))
         elif name.endswith((".urdf", ".xacro")) and root_tag(path) == "robot":

@@ -18,18 +18,13 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
+import launch_compare
 from corpus_files import Item
-from corpus_oracles import (
-    ROSBAG_PROBE,
-    ROSLAUNCH_PROBE,
-    WORKBENCH_LAUNCH_PROBE,
-    XACRO_PROBE,
-    compare_launch,
-    probe_json,
-)
+from corpus_oracles import ROSBAG_PROBE, XACRO_PROBE
 from corpus_run import (
     NO_ORACLE,
     REFUSAL,
+    STOPPED_STATUSES,
     Outcome,
     Runner,
     Verdict,
@@ -45,6 +40,9 @@ from corpus_run import (
 SIM_SECONDS = 1.0
 #: Wall time RViz runs for before it writes its snapshot, s.
 RVIZ_SECONDS = 1.0
+#: The environment every command gets unless the user's sets it (``--env`` overrides both):
+#: the TurtleBot3 model and laser ROBOTIS's launch files read with ``$(env ...)``.
+DEFAULT_ENV = {"TURTLEBOT3_MODEL": "burger", "LDS_MODEL": "LDS-01"}
 #: Warnings about data a running system would publish, not about the file itself.
 RUNTIME_WARNINGS = ("was not found by searchParam",)
 
@@ -98,12 +96,15 @@ class Context:
         urdf_to_graphviz: urdfdom's ``urdf_to_graphviz``, or None.
         sdf_check: The compiled libsdformat checker, or None.
         rosbag: ``ros_python`` also imports ``rosbag``.
-        oracle_packages: Extra ``ROS_PACKAGE_PATH`` entries for roslaunch: the packages
-            workbench ships that stand in for ones installed with ROS (gazebo_ros, xacro).
+        oracle_packages: Extra ``ROS_PACKAGE_PATH`` entries for roslaunch, after the root:
+            the packages workbench ships, which stand in for ones installed with ROS
+            (gazebo_ros, xacro), where workbench finds them.
         retry_hangs: Run a command that timed out once more with twice the time
             before calling it hung (a loaded machine is slow, not stuck).
         cache: workbench's cache folder (``WORKBENCH_CACHE_DIR``); None keeps the user's.
             A fresh one shows what a new user sees: meshes converted on first use.
+        environment: Variables every command gets (``--env NAME=VALUE``), over
+            :data:`DEFAULT_ENV` and the user's own.
     """
 
     root: Path
@@ -121,6 +122,7 @@ class Context:
     oracle_packages: list[Path] = field(default_factory=list)
     retry_hangs: bool = True
     cache: Path | None = None
+    environment: dict[str, str] = field(default_factory=dict)
     _counter: itertools.count = field(default_factory=itertools.count, repr=False)
     _lock: threading.Lock = field(default_factory=threading.Lock, repr=False)
 
@@ -131,12 +133,15 @@ class Context:
         return self.work / f"{number:05d}-{name}"
 
     def env(self, *, oracle: bool = False) -> dict[str, str]:
-        """The environment of a command: the packages, the models, a TurtleBot3 model."""
+        """The environment of a command: the packages, the models, :data:`DEFAULT_ENV`,
+        ``environment``."""
         env = {k: v for k, v in os.environ.items() if k != "WORKBENCH_DEBUG"}
         packages = [self.root, *(self.oracle_packages if oracle else [])]
         env["ROS_PACKAGE_PATH"] = os.pathsep.join(map(str, packages))
         env["GAZEBO_MODEL_PATH"] = os.pathsep.join(map(str, self.models))
-        env.setdefault("TURTLEBOT3_MODEL", "burger")
+        for name, value in DEFAULT_ENV.items():
+            env.setdefault(name, value)
+        env.update(self.environment)
         env["WORKBENCH_MASTER_URI"] = "inproc"  # never join a core another program runs
         if self.cache is not None:
             env["WORKBENCH_CACHE_DIR"] = str(self.cache)
@@ -152,10 +157,13 @@ class Context:
         return text
 
     def ours(self, argv: list[str]) -> Outcome:
-        """Run a workbench command (once more with twice the time if it timed out)."""
+        """Run a workbench command (once more with twice the time if it timed out, and once
+        more if a signal from outside stopped it)."""
         outcome = self.runner(argv, self.env(), self.work, self.timeout)
         if outcome.timed_out and self.retry_hangs:
             outcome = self.runner(argv, self.env(), self.work, 2 * self.timeout)
+        elif outcome.returncode in STOPPED_STATUSES:
+            outcome = self.runner(argv, self.env(), self.work, self.timeout)
         return outcome
 
     def tool(self, argv: list[str], env: dict[str, str] | None = None) -> Outcome:
@@ -189,46 +197,69 @@ def _oracle_outcome(outcome: Outcome, tool: str) -> Verdict | None:
 # --- launch files ----------------------------------------------------------------------
 
 
-def roslaunch_verdict(ctx: Context, path: Path) -> tuple[Verdict, dict[str, Any] | None]:
-    """roslaunch's answer and, when it accepts, the nodes and parameters it resolved."""
+#: workbench's own script for its side of the comparison (see :mod:`launch_compare`).
+LAUNCH_COMPARE = Path(launch_compare.__file__).resolve()
+#: What workbench refuses on purpose where roslaunch accepts (README, "Choices where a
+#: launch file meets a machine that is not ROS"): a ``<machine>`` on another computer, a
+#: ``binfile=`` parameter outside a dry run, a negative or NaN ``respawn_delay``.
+LAUNCH_BY_DESIGN = (
+    "workbench runs every node on this computer",
+    "which workbench's parameter server does not hold",
+    "must be 0 or more seconds",
+)
+
+
+def roslaunch_verdict(
+    ctx: Context, path: Path, args: list[str]
+) -> tuple[Verdict, dict[str, Any] | None]:
+    """roslaunch's answer (:mod:`roslaunch_oracle`) and, when it accepts, its plan."""
     if ctx.ros_python is None:
         return NO_ORACLE, None
-    outcome = ctx.tool([ctx.ros_python, "-c", ROSLAUNCH_PROBE, str(path)])
+    outcome = ctx.tool([ctx.ros_python, str(launch_compare.ORACLE), str(path), *args])
     broken = _oracle_outcome(outcome, "roslaunch")
-    data = None if broken else probe_json(outcome.stdout)
-    if data is None:
-        return broken or Verdict(None, f"roslaunch probe: {error_line(outcome)}"), None
-    if not data["accepts"]:
-        return Verdict(False, data["error"]), None
-    return Verdict(True), data
+    if broken:
+        return broken, None
+    try:
+        plan = json.loads(outcome.stdout)
+    except ValueError:
+        return Verdict(None, f"roslaunch oracle: {error_line(outcome)}"), None
+    if "error" in plan:
+        return Verdict(False, plan["error"]), None
+    return Verdict(True), plan
 
 
 def run_launch(ctx: Context, item: Item) -> list[Result]:
-    """``workbench launch --dry-run FILE``; where roslaunch accepts the file, also the nodes
-    and parameters workbench resolves when it reads the parameter files too."""
-    verdict, ros = roslaunch_verdict(ctx, item.path)
-    cli = ctx.ours([*ctx.workbench, "launch", "--dry-run", str(item.path)])
+    """``workbench launch --dry-run FILE``; where roslaunch accepts the file, also the plan
+    workbench resolves when it reads the parameter files too, compared with roslaunch's
+    (:func:`launch_compare.differences`), and the dry run's nodes with that plan's.
+
+    Each top-level ``<arg>`` without a value or default is given ``NAME:=value`` on both
+    sides (:func:`launch_compare.required_args`)."""
+    args = launch_compare.required_args(item.path)
+    verdict, ros = roslaunch_verdict(ctx, item.path, args)
+    cli = ctx.ours([*ctx.workbench, "launch", "--dry-run", str(item.path), *args])
     make = _result(ctx, item, "launch --dry-run", verdict, cli)
     broken = failure(cli)
     if broken:
         return [make(*broken)]
     ok, message, mismatch = cli.returncode == 0, error_line(cli), None
     if ok and verdict.accepts is not None:
-        probe = ctx.ours([ctx.python, "-c", WORKBENCH_LAUNCH_PROBE, str(item.path)])
+        probe = ctx.ours([ctx.python, str(LAUNCH_COMPARE), str(item.path), *args])
         broken = failure(probe)
         if broken:
             return [make(broken[0], f"reading its parameter files: {broken[1]}")]
-        data = probe_json(probe.stdout)
-        if data is None or not data["accepts"]:
-            ok = False
-            message = "reading its parameter files: " + (
-                data["error"] if data else error_line(probe)
-            )
+        try:
+            data = json.loads(probe.stdout)
+        except ValueError:
+            data = {"plan": {"error": error_line(probe)}, "dry_run": None}
+        if "error" in data["plan"]:
+            ok, message = False, f"reading its parameter files: {data['plan']['error']}"
         elif ros is not None:
-            problems = compare_launch(data, ros)
-            if problems:
-                more = f" (+{len(problems) - 2} more)" if len(problems) > 2 else ""
-                mismatch = "; ".join(problems[:2]) + more
+            problems = launch_compare.differences(
+                launch_compare.normalise(data["plan"]), launch_compare.normalise(ros), limit=2
+            )
+            problems += [data["dry_run"]] if data["dry_run"] else []
+            mismatch = "; ".join(problems) or None
     cls, line = classify(
         ok,
         message,
@@ -236,6 +267,7 @@ def run_launch(ctx: Context, item: Item) -> list[Result]:
         warnings=warning_lines(cli.stderr),
         mismatch=mismatch,
         tool="roslaunch",
+        by_design=any(part in message for part in LAUNCH_BY_DESIGN),
     )
     if cls == REFUSAL and "requires the" in verdict.message and "arg to be set" in verdict.message:
         line = f"needs args: {line}"
@@ -285,15 +317,7 @@ def run_description(ctx: Context, item: Item) -> list[Result]:
     if broken:
         results.append(make(*broken))
     else:
-        try:
-            report = json.loads(check.stdout)
-        except ValueError:
-            report = {}
-        warnings = [
-            f"{f.get('element', '')}: {f.get('message', '')}"
-            for f in report.get("findings", [])
-            if f.get("severity") == "warning"
-        ] + warning_lines(check.stderr)
+        report, warnings = _check_report(check)
         mismatch = None
         tree = report.get("tree")
         if check.returncode == 0 and ros_tree is not None and tree is not None and tree != ros_tree:
@@ -338,6 +362,20 @@ def run_description(ctx: Context, item: Item) -> list[Result]:
             )
         )
     return results
+
+
+def _check_report(check: Outcome) -> tuple[dict[str, Any], list[str]]:
+    """``workbench check --json``'s report (empty when it printed none) and its warnings."""
+    try:
+        report = json.loads(check.stdout)
+    except ValueError:
+        report = {}
+    warnings = [
+        f"{f.get('element', '')}: {f.get('message', '')}"
+        for f in report.get("findings", [])
+        if f.get("severity") == "warning"
+    ]
+    return report, warnings + warning_lines(check.stderr)
 
 
 def _check_error(report: dict[str, Any]) -> str:
@@ -396,15 +434,7 @@ def run_model(ctx: Context, item: Item) -> list[Result]:
     broken = failure(check)
     if broken:
         return [make(*broken)]
-    try:
-        report = json.loads(check.stdout)
-    except ValueError:
-        report = {}
-    warnings = [
-        f"{f.get('element', '')}: {f.get('message', '')}"
-        for f in report.get("findings", [])
-        if f.get("severity") == "warning"
-    ] + warning_lines(check.stderr)
+    report, warnings = _check_report(check)
     message = _check_error(report) or error_line(check)
     return [
         make(

@@ -21,17 +21,22 @@ from pathlib import Path
 WORKS = "works"
 WARNINGS = "works with warnings"
 REFUSAL = "correct refusal"
+#: workbench refuses on purpose what ROS accepts (a ``<machine>`` on another computer).
+DESIGN = "refusal by design"
 UNVERIFIED = "refusal, no oracle"
 WRONG = "wrong"
 TRACEBACK = "traceback"
 HANG = "hang"
 CRASH = "crash"
-CLASSES = (WORKS, WARNINGS, REFUSAL, UNVERIFIED, WRONG, TRACEBACK, HANG, CRASH)
+CLASSES = (WORKS, WARNINGS, REFUSAL, DESIGN, UNVERIFIED, WRONG, TRACEBACK, HANG, CRASH)
 #: Classes that count as running.
 RUNS = (WORKS, WARNINGS)
 
 #: Exit status of workbench's top-level guard after an unexpected exception (a bug).
 INTERNAL_ERROR_STATUS = 70
+#: Exit statuses of a workbench command stopped by SIGINT or SIGTERM (128 + the signal).
+#: This benchmark stops its children with SIGKILL only, so these come from outside.
+STOPPED_STATUSES = {128 + signal.SIGINT: "SIGINT", 128 + signal.SIGTERM: "SIGTERM"}
 #: Longest stdout/stderr kept per command, characters.
 KEEP_CHARS = 200_000
 
@@ -134,6 +139,9 @@ def failure(outcome: Outcome) -> tuple[str, str] | None:
         except ValueError:
             name = f"signal {-outcome.returncode}"
         return CRASH, f"killed by {name}: {last_line(outcome.stderr) or last_line(outcome.stdout)}"
+    if outcome.returncode in STOPPED_STATUSES:
+        name = STOPPED_STATUSES[outcome.returncode]
+        return CRASH, f"stopped by {name} from outside (exit {outcome.returncode})"
     if _TRACEBACK in outcome.text:
         return TRACEBACK, traceback_line(outcome.text)
     if outcome.returncode == INTERNAL_ERROR_STATUS and "internal error" in outcome.stderr:
@@ -190,6 +198,7 @@ def classify(
     warnings: Sequence[str] = (),
     mismatch: str | None = None,
     tool: str = "ROS",
+    by_design: bool = False,
 ) -> tuple[str, str]:
     """The class of a command that neither hung, crashed nor printed a traceback.
 
@@ -200,6 +209,8 @@ def classify(
         warnings: workbench's warnings when it accepted.
         mismatch: How workbench's result differs from the oracle's, when both accept.
         tool: The oracle's name for the messages.
+        by_design: workbench's refusal is one it makes on purpose (documented), so it is
+            not wrong where the oracle accepts the file.
 
     Returns:
         (class, one-line message).
@@ -212,8 +223,10 @@ def classify(
         if warnings:
             return WARNINGS, warnings[0]
         return WORKS, ""
+    if verdict.accepts is False:
+        return REFUSAL, ours_message
+    if by_design:
+        return DESIGN, ours_message
     if verdict.accepts is None:
         return UNVERIFIED, ours_message
-    if verdict.accepts:
-        return WRONG, shorten(f"refused, {tool} accepts: {ours_message}")
-    return REFUSAL, ours_message
+    return WRONG, shorten(f"refused, {tool} accepts: {ours_message}")

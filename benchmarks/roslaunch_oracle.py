@@ -14,7 +14,9 @@ calls) instead of a random name, and ``<param command=...>`` gives the marker
 ``<command: ...>`` instead of running the program (workbench's dry run does not run it
 either; the differential compares the command text).
 
-Usage: ``/usr/bin/python3 benchmarks/roslaunch_oracle.py < jobs.json``.
+Usage: ``/usr/bin/python3 benchmarks/roslaunch_oracle.py < jobs.json``, or for one file
+with this process's environment, ``/usr/bin/python3 benchmarks/roslaunch_oracle.py FILE
+[NAME:=VALUE ...]`` (prints that file's result alone).
 """
 
 import base64
@@ -118,7 +120,8 @@ def resolve(job, calls):
 
 
 def main():
-    jobs = json.load(sys.stdin)
+    one = len(sys.argv) > 1
+    jobs = [{"file": sys.argv[1], "argv": sys.argv[2:]}] if one else json.load(sys.stdin)
     calls = _install_replacements()
     real_stdout, real_stderr = sys.stdout, sys.stderr
     results = []
@@ -129,7 +132,7 @@ def main():
                 results.append(resolve(job, calls))
             finally:
                 sys.stdout, sys.stderr = real_stdout, real_stderr
-    json.dump(results, real_stdout)
+    json.dump(results[0] if one else results, real_stdout)
 
 
 if __name__ == "__main__":

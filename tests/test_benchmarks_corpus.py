@@ -2,12 +2,13 @@
 (package.xml, launch/, urdf/, worlds/, Gazebo models, a map_server map):
 
 * which files it finds, and as what;
-* every class (works, warnings, correct refusal, no oracle, wrong, traceback, hang, crash)
-  from commands injected in place of workbench and roslaunch, and from real child
-  processes that hang, abort or raise;
-* the real workbench beside the real oracles: Debian's roslaunch (same nodes, args,
-  remappings and parameters), urdfdom's check_urdf and urdf_to_graphviz (same tree and
-  graph), libsdformat (same verdict on models and worlds).
+* every class (works, warnings, correct refusal, refusal by design, no oracle, wrong,
+  traceback, hang, crash) from commands injected in place of workbench and roslaunch, and
+  from real child processes that hang, abort or raise;
+* the real workbench beside the real oracles: Debian's roslaunch through
+  benchmarks/roslaunch_oracle.py (the same plan, compared by benchmarks/launch_compare.py),
+  urdfdom's check_urdf and urdf_to_graphviz (same tree and graph), libsdformat (same
+  verdict on models and worlds).
 """
 
 from __future__ import annotations
@@ -28,10 +29,10 @@ TIMEOUT = 120.0  # s per command: the machines that run the tests are often load
 
 @pytest.fixture(scope="module")
 def corpus():  # type: ignore[no-untyped-def]
-    with benchmark_modules(
-        "corpus", "corpus_files", "corpus_jobs", "corpus_oracles", "corpus_run"
-    ) as modules:
-        yield dict(zip(("main", "files", "jobs", "oracles", "run"), modules, strict=True))
+    names = ("corpus", "corpus_files", "corpus_jobs", "corpus_oracles", "corpus_run")
+    with benchmark_modules(*names, "launch_compare") as modules:
+        keys = ("main", "files", "jobs", "oracles", "run", "compare")
+        yield dict(zip(keys, modules, strict=True))
 
 
 def write(path: Path, text: str) -> Path:
@@ -181,6 +182,15 @@ def tree(tmp_path: Path) -> tuple[Path, Path]:
         </launch>
         """,
     )
+    write(  # roslaunch accepts it; workbench refuses a machine elsewhere, on purpose
+        bringup / "launch" / "remote.machine",
+        """
+        <launch>
+          <machine name="far" address="far.example.com" default="true"/>
+          <node pkg="turtlesim" type="turtlesim_node" name="sim"/>
+        </launch>
+        """,
+    )
     write(
         bringup / "launch" / "include.launch.xml",
         """
@@ -240,6 +250,7 @@ def test_each_file_is_found_as_its_kind(corpus, tree) -> None:  # type: ignore[n
         ("launch", "demo_bringup/launch/bringup.launch"),
         ("launch", "demo_bringup/launch/needs_robot.launch"),
         ("launch", "demo_bringup/launch/include.launch.xml"),
+        ("launch", "demo_bringup/launch/remote.machine"),
         ("map", "demo_bringup/maps/map.yaml"),
         ("world", "demo_gazebo/worlds/demo.world"),
         ("world", "demo_gazebo/worlds/missing.world"),
@@ -249,7 +260,7 @@ def test_each_file_is_found_as_its_kind(corpus, tree) -> None:  # type: ignore[n
         ("model", "models/demo_shelf/model-1_4.sdf"),
     }
     only = corpus["files"].discover(root, [models], only=["launch"])
-    assert {item.kind for item in only} == {"launch"} and len(only) == 3
+    assert {item.kind for item in only} == {"launch"} and len(only) == 4
 
 
 def test_an_srdf_gets_the_description_its_planning_context_loads(corpus, tmp_path) -> None:  # type: ignore[no-untyped-def]
@@ -288,11 +299,12 @@ class FakeTools:
 
     ROS = "/fake/ros/python3"
 
-    def __init__(self, oracles) -> None:  # type: ignore[no-untyped-def]
-        self.oracles = oracles
+    def __init__(self, modules) -> None:  # type: ignore[no-untyped-def]
+        self.modules = modules
         self.calls: list[list[str]] = []
 
-    def plan(self, args: str) -> dict:
+    def plan(self, args: list[str] | str) -> dict:
+        """A plan in roslaunch_oracle.py's shape (roslaunch gives args as one string)."""
         node = {
             "pkg": "turtlesim",
             "type": "turtlesim_node",
@@ -301,31 +313,44 @@ class FakeTools:
             "args": args,
             "remaps": [],
             "env": [],
+            "launch_prefix": None,
+            "cwd": None,
+            "machine": None,
+            "output": None,
+            "respawn": False,
+            "respawn_delay": 0.0,
+            "required": False,
         }
-        return {"accepts": True, "nodes": [node], "params": {"/rate": 50.0}, "deletes": []}
+        return {
+            "nodes": [node],
+            "tests": [],
+            "params": {"/rate": 50.0},
+            "clear_params": [],
+            "executables": [],
+            "machines": {},
+        }
 
     def __call__(self, argv, env, cwd, timeout):  # type: ignore[no-untyped-def]
-        run = self.oracles["run"]
+        run = self.modules["run"]
         self.calls.append(list(argv))
-        name = Path(argv[-1]).stem
-        mark = self.oracles["oracles"].MARK
+        name = next(Path(a).stem for a in argv if a.endswith(".launch"))
         if argv[0] == self.ROS:
+            assert argv[1] == str(self.modules["compare"].ORACLE)
             if name == "needs_arg":
-                answer = {
-                    "accepts": False,
-                    "error": "XmlParseException: [x] requires the 'robot' arg to be set",
-                }
+                answer = {"error": "XmlParseException: [x] requires the 'robot' arg to be set"}
             elif name == "ros_refuses":
-                answer = {"accepts": False, "error": "ResourceNotFound: demo_missing"}
+                answer = {"error": "ResourceNotFound: demo_missing"}
             else:
                 answer = self.plan("--rate 50")
-            return run.Outcome(0, mark + json.dumps(answer) + "\n", "")
-        if argv[1:3] == ["-c", self.oracles["oracles"].WORKBENCH_LAUNCH_PROBE]:
-            ours = self.plan("--rate 10" if name == "differs" else "--rate 50")
-            return run.Outcome(0, mark + json.dumps(ours) + "\n", "")
+            return run.Outcome(0, json.dumps(answer), "")
+        if argv[1] == str(self.modules["jobs"].LAUNCH_COMPARE):
+            ours = self.plan(["--rate", "10" if name == "differs" else "50"])
+            dry = "the dry run finds nodes [], not ['sim']" if name == "dry_differs" else None
+            return run.Outcome(0, json.dumps({"plan": ours, "dry_run": dry}), "")
         cli = {
             "hangs": run.Outcome(None, "", "", timed_out=True, seconds=timeout),
             "aborts": run.Outcome(-6, "", "terminate called after throwing an instance\n"),
+            "stopped": run.Outcome(143, "", ""),  # workbench stopped by a SIGTERM
             "traceback": run.Outcome(
                 1,
                 "",
@@ -336,6 +361,12 @@ class FakeTools:
             ),
             "warns": run.Outcome(
                 0, "node /sim: turtlesim/turtlesim_node\n", "[WARN] launch-prefix is ignored\n"
+            ),
+            "remote": run.Outcome(
+                1,
+                "",
+                "workbench launch: error: remote.launch:2: <machine name='far' address='far'>: "
+                'workbench runs every node on this computer (use address="localhost")\n',
             ),
         }
         if name in cli:
@@ -358,12 +389,15 @@ def test_every_class_from_injected_commands(corpus, tmp_path) -> None:  # type: 
         "warns": (run.WARNINGS, "launch-prefix"),
         "needs_arg": (run.REFUSAL, "needs args: "),
         "refuses": (run.WRONG, "refused, roslaunch accepts: "),
-        "differs": (run.WRONG, "differs from roslaunch: node /sim args"),
+        "differs": (run.WRONG, "differs from roslaunch: node sim args: ours ['--rate', '10']"),
+        "dry_differs": (run.WRONG, "differs from roslaunch: the dry run finds nodes []"),
+        "remote": (run.DESIGN, "remote.launch:2: <machine name='far'"),
         "ros_refuses": (run.WRONG, "accepted, roslaunch refuses: ResourceNotFound"),
         "traceback": (run.TRACEBACK, "KeyError: 'rate'"),
         "internal": (run.TRACEBACK, "internal error"),
         "hangs": (run.HANG, "no answer within"),
         "aborts": (run.CRASH, "killed by SIGABRT"),
+        "stopped": (run.CRASH, "stopped by SIGTERM from outside (exit 143)"),
     }
     for name, (cls, message) in expected.items():
         (result,) = jobs.run_launch(ctx, files.Item("launch", tmp_path / f"{name}.launch"))
@@ -375,6 +409,9 @@ def test_every_class_from_injected_commands(corpus, tmp_path) -> None:  # type: 
     # A hang is given a second chance with twice the time before it counts.
     hung = [call for call in fake.calls if call[-1].endswith("hangs.launch") and "launch" in call]
     assert len(hung) == 2
+    # So is a command that a signal from outside stopped.
+    stopped = [c for c in fake.calls if c[-1].endswith("stopped.launch") and "launch" in c]
+    assert len(stopped) == 2
 
     # Without roslaunch, a refusal cannot be judged.
     ctx.ros_python = None
@@ -403,28 +440,25 @@ def test_the_table_counts_what_ros_accepts(corpus) -> None:  # type: ignore[no-u
     assert row[run.REFUSAL] == row[run.WRONG] == row[run.HANG] == 1
 
 
-def test_compare_launch_names_each_difference(corpus) -> None:  # type: ignore[no-untyped-def]
-    compare = corpus["oracles"].compare_launch
-    node = {
-        "pkg": "p",
-        "type": "t",
-        "name": "n",
-        "namespace": "/ns/",
-        "args": "a 'b c'",
-        "remaps": [["x", "/y/"]],
-        "env": [],
-    }
-    ros = {"nodes": [node], "params": {"/ns/n/rate": 1, "/flag": True}, "deletes": []}
-    ours = {
-        "nodes": [dict(node, namespace="/ns", args=["a", "b c"], remaps=[["x", "/y"]], env=None)],
-        "params": {"/ns/n/rate": 1.0, "/flag": True},
-        "deletes": [],
-    }
-    assert compare(ours, ros) == []
+def test_the_comparison_names_each_difference(corpus) -> None:  # type: ignore[no-untyped-def]
+    compare = corpus["compare"]
+    theirs = FakeTools(corpus).plan("a 'b c'")
+    theirs["nodes"][0].update(namespace="/ns/", remaps=[["x", "/y/"]])
+    theirs["params"] = {"/ns/n/rate": 1, "/flag": True}
+    ours = json.loads(json.dumps(theirs))
+    # The same plan spelt as workbench spells it: args as words, canonical names,
+    # an integer-valued float, the default output.
+    ours["nodes"][0].update(namespace="/ns", args=["a", "b c"], remaps=[["x", "/y"]], output="log")
+    ours["params"]["/ns/n/rate"] = 1.0
+    assert compare.differences(compare.normalise(ours), compare.normalise(theirs)) == []
     ours["params"]["/flag"] = 1
     ours["nodes"][0]["remaps"] = [["x", "/z"]]
-    problems = compare(ours, ros)
-    assert any("remaps" in p for p in problems) and any("param /flag" in p for p in problems)
+    ours["nodes"][0]["respawn"] = True
+    problems = compare.differences(compare.normalise(ours), compare.normalise(theirs))
+    assert any(p.startswith("node sim remaps") for p in problems), problems
+    assert any(p.startswith("node sim respawn") for p in problems)
+    assert any(p.startswith("param /flag") for p in problems), problems
+    assert compare.classify(ours, {"error": "x"})[0] == "ours only"
 
 
 # --- real child processes -----------------------------------------------------------------
@@ -522,8 +556,13 @@ def test_launch_files_resolve_as_roslaunch_resolves_them(corpus, tree, tmp_path)
     assert (same.cls, same.ros) == (run.WORKS, "accepts"), same
     (included,) = jobs.run_launch(ctx, files.Item("launch", launch / "include.launch.xml"))
     assert (included.cls, included.ros) == (run.WORKS, "accepts"), included
+    # An argument without a default is given NAME:=value on both sides.
     (needs,) = jobs.run_launch(ctx, files.Item("launch", launch / "needs_robot.launch"))
-    assert needs.cls == run.REFUSAL and needs.message.startswith("needs args: "), needs
+    assert (needs.cls, needs.ros) == (run.WORKS, "accepts"), needs
+    # A machine elsewhere: roslaunch accepts it, workbench refuses it on purpose.
+    (remote,) = jobs.run_launch(ctx, files.Item("launch", launch / "remote.machine"))
+    assert (remote.cls, remote.ros) == (run.DESIGN, "accepts"), remote
+    assert "workbench runs every node on this computer" in remote.message
     # A changed copy of what workbench resolves is caught.
     ctx.python = str(
         write(
@@ -540,6 +579,36 @@ def test_launch_files_resolve_as_roslaunch_resolves_them(corpus, tree, tmp_path)
     os.chmod(ctx.python, 0o755)
     (changed,) = jobs.run_launch(ctx, files.Item("launch", launch / "bringup.launch"))
     assert changed.cls == run.WRONG and "args" in changed.message, changed
+
+
+def test_roslaunch_finds_the_stand_ins_where_workbench_does(corpus, tree, tmp_path) -> None:  # type: ignore[no-untyped-def]
+    run, jobs, files = corpus["run"], corpus["jobs"], corpus["files"]
+    ctx = real_context(
+        corpus,
+        tree,
+        tmp_path,
+        ros_python=ros_python("roslaunch", "python3-roslaunch"),
+        oracle_packages=corpus["main"].oracle_packages(),
+    )
+    root, _ = tree
+    package(root, "gazebo_ros")  # the user's own copy shadows workbench's stand-in
+    launch = write(
+        root / "demo_bringup" / "launch" / "finds.launch",
+        """
+        <launch>
+          <param name="gazebo_ros" value="$(find gazebo_ros)"/>
+          <param name="robot_description"
+                 command="$(find xacro)/xacro $(find demo_description)/urdf/demo.urdf"/>
+        </launch>
+        """,
+    )
+    # Both find the user's gazebo_ros in the root and workbench's xacro at the same path
+    # (a different path would differ in the parameters).
+    (finds,) = jobs.run_launch(ctx, files.Item("launch", launch))
+    assert (finds.cls, finds.ros) == (run.WORKS, "accepts"), finds
+    ctx.oracle_packages = []  # without the stand-ins roslaunch does not know xacro
+    (alone,) = jobs.run_launch(ctx, files.Item("launch", launch))
+    assert alone.cls == run.WRONG and "ResourceNotFound: xacro" in alone.message, alone
 
 
 def test_descriptions_check_and_graph_as_urdfdom_does(
@@ -610,19 +679,25 @@ def test_the_script_prints_the_table_and_writes_json(corpus, tree, tmp_path, cap
 
 def test_commands_see_the_packages_the_models_and_their_own_cache(corpus, tree, tmp_path) -> None:  # type: ignore[no-untyped-def]
     root, models = tree
-    package(root, "gazebo_ros")  # the user's own copy shadows workbench's stand-in
     work = tmp_path / "work"
     work.mkdir()
-    shim = corpus["main"].oracle_packages(root, work)
-    linked = {path.name for folder in shim for path in folder.iterdir()}
-    assert "xacro" in linked and "gazebo_ros" not in linked
+    shim = corpus["main"].oracle_packages()
+    assert "xacro" in {folder.name for folder in shim}
     ctx = corpus["jobs"].Context(
-        root=root, models=[models], work=work, timeout=1.0, oracle_packages=shim, cache=work / "c"
+        root=root,
+        models=[models],
+        work=work,
+        timeout=1.0,
+        oracle_packages=shim,
+        cache=work / "c",
+        environment={"LDS_MODEL": "LDS-02"},
     )
     ours, ros = ctx.env(), ctx.env(oracle=True)
     assert ours["ROS_PACKAGE_PATH"] == str(root)
-    assert ros["ROS_PACKAGE_PATH"] == os.pathsep.join([str(root), str(shim[0])])
+    assert ros["ROS_PACKAGE_PATH"] == os.pathsep.join(map(str, [root, *shim]))
     assert ours["GAZEBO_MODEL_PATH"] == ros["GAZEBO_MODEL_PATH"] == str(models)
     assert ours["WORKBENCH_MASTER_URI"] == "inproc"
     assert ours["WORKBENCH_CACHE_DIR"] == str(work / "c")
+    assert ours["LDS_MODEL"] == ros["LDS_MODEL"] == "LDS-02"  # --env over the default
+    assert ours["TURTLEBOT3_MODEL"] == os.environ.get("TURTLEBOT3_MODEL", "burger")
     assert "PYTHONPATH" not in ros

@@ -3,7 +3,8 @@
 ROS's side is Debian's ``python3-roslaunch``: ``roslaunch.xmlloader.XmlLoader().load(file,
 ROSLaunchConfig(), argv=...)`` in ``/usr/bin/python3`` (``benchmarks/roslaunch_oracle.py``),
 no master, no process started. workbench's side is ``load_launch`` with the same
-``ROS_PACKAGE_PATH``, environment and arguments. Compared (``benchmarks/launch_corpus.py``):
+``ROS_PACKAGE_PATH``, environment and arguments. Compared (``benchmarks/launch_compare.py``,
+which ``benchmarks/corpus.py`` uses too):
 every node and test (package, type, name, namespace, args split as a shell splits them,
 remappings, ``<env>``, output, respawn, respawn_delay, required, launch-prefix, cwd,
 machine), every parameter with its YAML type (rosparam's ``!degrees``/``!radians``
@@ -18,10 +19,11 @@ names, per-method files, ``<group if="$(eval ...)">``) (:mod:`launch_shapes`), a
 seeded random files of nested groups, includes, arguments, remappings and parameters
 (:mod:`launch_random`).
 
-Where workbench differs on purpose (not exercised here): it refuses an argument given on
-the command line that no ``<arg>`` declares (roslaunch ignores it), a ``<machine>`` that is
+Where workbench differs on purpose (not exercised here): it refuses a ``<machine>`` that is
 not this computer, ``binfile=`` outside a dry run, and a negative or NaN ``respawn_delay``;
-a ``<node>`` without ``name`` takes its type's name (roslaunch requires one).
+a ``<node>`` without ``name`` takes its type's name (roslaunch requires one); an argument
+given on the command line that no ``<arg>`` declares is ignored, as roslaunch ignores it,
+but with a warning.
 
 Skips (fails under WORKBENCH_REQUIRE_ALL=1) without ``/usr/bin/python3`` able to import
 roslaunch (``python3-roslaunch``) and catkin (``python3-catkin``, which roslaunch's
@@ -43,7 +45,7 @@ RANDOM_CASES = 50
 def corpus():
     ros_python("roslaunch", "python3-roslaunch")
     ros_python("catkin.find_in_workspaces", "python3-catkin")  # roslaunch's $(find pkg)/path
-    with benchmark_modules("launch_corpus") as (module,):
+    with benchmark_modules("launch_compare") as (module,):
         yield module
 
 

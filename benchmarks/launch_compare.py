@@ -1,29 +1,30 @@
-"""Resolve launch files with ROS 1's roslaunch and with workbench, and compare the plans.
+"""ROS 1's roslaunch and workbench's launch loader on the same file: the two plans, compared.
 
-For every ``*.launch`` under ``--root`` (a folder of real ROS packages, e.g. git clones of
-turtlebot3 and universal_robot), ROS's own loader (Debian's ``python3-roslaunch``, run by
-:mod:`roslaunch_oracle` in ``/usr/bin/python3``) and workbench's :func:`load_launch` each
-resolve the file with the same ``ROS_PACKAGE_PATH``, environment and arguments. Both plans
-are normalised (:func:`normalise`: namespaces without a trailing slash, ``args`` split as a
-shell does, remappings and ``<env>`` as mappings, ``$(anon)`` names numbered in order of
-appearance) and compared field by field: nodes and tests (package, type, name, namespace,
-args, remaps, env, output, respawn, respawn_delay, required, launch_prefix, cwd, machine),
-parameters, cleared namespaces and ``rosparam`` commands. ``<param command=...>`` runs on
-neither side: both give the marker ``<command: ...>`` with the substituted command.
+ROS's side is Debian's ``python3-roslaunch``, run by :mod:`roslaunch_oracle` in
+``/usr/bin/python3`` (its XML loader, no master); workbench's side is :func:`load_launch`
+with the same ``ROS_PACKAGE_PATH``, environment and arguments. Both plans are normalised
+(:func:`normalise`: namespaces without a trailing slash, ``args`` split as a shell does,
+remappings and ``<env>`` as mappings, ``$(anon)`` names numbered in order of appearance)
+and compared field by field (:func:`differences`): nodes and tests (package, type, name,
+namespace, args, remaps, env, output, respawn, respawn_delay, required, launch_prefix, cwd,
+machine), parameters with their types, cleared namespaces, ``rosparam`` commands and
+machines. ``<param command=...>`` runs on neither side: both give the marker
+``<command: ...>`` with the substituted command.
 
-Each file is classified: ``agree``, ``differ`` (both resolved, plans differ), ``ours only``
-(roslaunch refused it), ``roslaunch only`` (we refused what roslaunch resolves), or ``both
-refuse``. Prints the table, the disagreements, and writes ``benchmarks/results/launch_corpus.json``.
+Used by ``benchmarks/corpus.py`` (its ``launch`` kind) and by the differential test of the
+launch loader. Run as a script, it prints workbench's side for one file as JSON, in
+workbench's Python, as a child process of the corpus benchmark::
 
-A file that declares an argument without a default is given ``NAME:=value`` (both sides):
-roslaunch asks for one, and any text resolves the file.
+    python benchmarks/launch_compare.py FILE [NAME:=VALUE ...]
 
-Usage: ``python benchmarks/launch_corpus.py --root /path/to/src [--env NAME=VALUE ...]``.
+prints ``{"plan": PLAN, "dry_run": null}`` (``PLAN`` in the oracle's shape, or ``{"error":
+LINE}`` for workbench's one-line refusal); ``dry_run`` says how ``workbench launch
+--dry-run``, which reads no file but the launch files, finds other nodes (null when it
+finds the same).
 """
 
 from __future__ import annotations
 
-import argparse
 import contextlib
 import json
 import math
@@ -32,18 +33,13 @@ import re
 import shlex
 import subprocess
 import sys
-from collections import Counter
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
-ROOT = Path(__file__).resolve().parent.parent
-HERE = Path(__file__).resolve().parent
-ORACLE = HERE / "roslaunch_oracle.py"
+ORACLE = Path(__file__).resolve().parent / "roslaunch_oracle.py"
 ROS_PYTHON = "/usr/bin/python3"
 COMMAND_MARKER = "<command: {}>"
-NODE_FIELDS = ("pkg", "type", "name", "namespace", "args", "remaps", "env", "launch_prefix")
-NODE_FIELDS += ("cwd", "machine")
 RUN_FIELDS = ("output", "respawn", "respawn_delay", "required")
 TEST_FIELDS = ("test_name", "time_limit", "retry")
 _ANON = re.compile(r"([A-Za-z_]\w*?)_anon\d+")
@@ -296,16 +292,17 @@ def classify(ours: dict[str, Any], theirs: dict[str, Any]) -> tuple[str, list[st
     return ("differ", found) if found else ("agree", [])
 
 
-# --- the corpus --------------------------------------------------------------------------
+# --- arguments and the command line --------------------------------------------------------
 
 
 def required_args(path: Path) -> list[str]:
-    """``NAME:=value`` for each top-level ``<arg>`` without value or default."""
+    """``NAME:=value`` for each top-level ``<arg>`` without value or default: roslaunch asks
+    for one, and any text resolves the file."""
     from lxml import etree
 
     try:
         root = etree.parse(str(path), etree.XMLParser(resolve_entities=False)).getroot()
-    except etree.XMLSyntaxError:
+    except (etree.XMLSyntaxError, OSError):
         return []
     return [
         f"{e.get('name')}:=value"
@@ -314,62 +311,28 @@ def required_args(path: Path) -> list[str]:
     ]
 
 
-def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--root", type=Path, required=True, help="a folder of ROS packages")
-    parser.add_argument(
-        "--package-path",
-        default=None,
-        help="ROS_PACKAGE_PATH for both loaders (default: ROOT, then workbench's shipped "
-        "packages, so both see the same gazebo_ros and xacro)",
-    )
-    parser.add_argument("--env", action="append", default=[], help="NAME=VALUE for both")
-    parser.add_argument(
-        "--pattern",
-        action="append",
-        default=[],
-        help="file names to read (default *.launch; e.g. --pattern '*.launch.xml')",
-    )
-    parser.add_argument("--verbose", action="store_true", help="print every disagreement")
-    options = parser.parse_args()
-    root = options.root.resolve()
-    package_path = options.package_path or f"{root}:{ROOT / 'examples' / 'packages'}"
-    env = {"ROS_PACKAGE_PATH": package_path, **dict(e.split("=", 1) for e in options.env)}
-    files = sorted({f for pattern in options.pattern or ["*.launch"] for f in root.rglob(pattern)})
-    jobs = [{"file": str(f), "argv": required_args(f), "env": env} for f in files]
-    theirs = roslaunch_plans(jobs)
-    rows = []
-    counts: Counter[str] = Counter()
-    os.chdir(root)
-    resolved = dry_same = 0
-    for job, their in zip(jobs, theirs, strict=True):
-        ours = workbench_plan(job)
-        kind, why = classify(ours, their)
-        counts[kind] += 1
-        if "error" not in ours:  # the dry run resolves it too, to the same nodes
-            resolved += 1
-            dry = workbench_plan(job, dry_run=True)
-            same = "error" not in dry and normalise(dry)["nodes"] == normalise(ours)["nodes"]
-            dry_same += same
-            if not same:
-                why = [*why, f"dry run: {dry.get('error', 'other nodes')}"]
-        rows.append({"file": str(Path(job["file"]).relative_to(root)), "kind": kind, "why": why})
-    width = max(len(k) for k in counts) if counts else 0
-    print(f"{len(files)} launch files under {root}")
-    for kind in ("agree", "differ", "roslaunch only", "ours only", "both refuse"):
-        print(f"  {kind:<{width}}  {counts[kind]}")
-    print(f"workbench's dry run resolves {dry_same} of the {resolved} to the same nodes")
-    for row in rows:
-        if row["kind"] in ("differ", "roslaunch only") or (options.verbose and row["why"]):
-            print(f"\n[{row['kind']}] {row['file']}")
-            for line in row["why"]:
-                print(f"    {line}")
-    out = HERE / "results" / "launch_corpus.json"
-    summary = {"root": str(root), "counts": counts, "dry_run_same_nodes": dry_same}
-    out.write_text(json.dumps({**summary, "files": rows}, indent=1))
+def dry_run_difference(job: dict[str, Any], plan: dict[str, Any]) -> str | None:
+    """How the dry run's nodes differ from ``plan``'s (workbench's full read), or None."""
+    dry = workbench_plan(job, dry_run=True)
+    if "error" in dry:
+        return f"the dry run refuses: {dry['error']}"
+    ours, theirs = normalise(dry)["nodes"], normalise(plan)["nodes"]
+    if ours == theirs:
+        return None
+    return f"the dry run finds nodes {[n['name'] for n in ours]}, not {[n['name'] for n in theirs]}"
+
+
+def main(argv: list[str]) -> int:
+    if not argv or argv[0].startswith("-"):
+        print("usage: python benchmarks/launch_compare.py FILE [NAME:=VALUE ...]", file=sys.stderr)
+        return 2
+    job = {"file": argv[0], "argv": argv[1:]}
+    with contextlib.redirect_stdout(sys.stderr):  # stdout carries the JSON alone
+        plan = workbench_plan(job)
+        dry = None if "error" in plan else dry_run_difference(job, plan)
+    json.dump({"plan": plan, "dry_run": dry}, sys.stdout)
     return 0
 
 
 if __name__ == "__main__":
-    sys.path.insert(0, str(ROOT))
-    raise SystemExit(main())
+    raise SystemExit(main(sys.argv[1:]))
