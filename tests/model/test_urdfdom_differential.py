@@ -30,8 +30,6 @@ when the whole suite runs. Install them with ``apt-get install liburdfdom-tools`
 
 from __future__ import annotations
 
-import contextlib
-import io
 import math
 import subprocess
 from collections.abc import Callable
@@ -40,24 +38,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
-from workbench.cli import main
+from urdfdom_tools import Tools, run_cli
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
 LAB_MODELS = sorted((REPO_ROOT / "urdf").glob("*.urdf"))
 RANDOM_CASES = 40
-
-
-@dataclass(frozen=True)
-class Tools:
-    check_urdf: str
-    urdf_to_graphviz: str
-
-
-@pytest.fixture
-def ros_tools(require_program) -> Tools:
-    """The real tools, or skip (fail under WORKBENCH_REQUIRE_ALL=1, via conftest's skip_or_fail)."""
-    return Tools(require_program("check_urdf"), require_program("urdf_to_graphviz"))
 
 
 # --- running both sides ----------------------------------------------------------------
@@ -88,18 +73,11 @@ def run_ros(tools: Tools, path: Path, tmp_path: Path) -> Run:
     return Run(done.returncode, done.stdout, stderr, gv.read_text() if gv.exists() else None)
 
 
-def _main(*args: str) -> tuple[int, str, str]:
-    stdout, stderr = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
-        status = main(list(args))
-    return status, stdout.getvalue(), stderr.getvalue()
-
-
 def run_workbench(path: Path, tmp_path: Path, load: bool = False) -> Run:
-    status, stdout, stderr = _main("check", str(path), *([] if load else ["--no-load"]))
+    status, stdout, stderr = run_cli("check", str(path), *([] if load else ["--no-load"]))
     gv = tmp_path / "wb.gv"
     gv.unlink(missing_ok=True)
-    graph_status, _, graph_error = _main("graph", str(path), "-o", str(gv))
+    graph_status, _, graph_error = run_cli("graph", str(path), "-o", str(gv))
     if graph_status != 0:
         assert graph_error.count("\n") == 1 and "Traceback" not in graph_error, graph_error
     return Run(status, stdout, stderr.splitlines(), gv.read_text() if gv.exists() else None)
@@ -381,10 +359,10 @@ def test_a_loop_below_the_root_is_an_error_not_a_crash(tmp_path):
     """
     path = tmp_path / "loop.urdf"
     path.write_text(_sub(LAST, _joint("up", "hand", "arm"))(BASE))
-    status, stdout, stderr = _main("check", str(path), "--no-load")
+    status, stdout, stderr = run_cli("check", str(path), "--no-load")
     tree, findings = split_report(stdout)
     assert status == 1 and tree == "" and stderr == ""
     assert "link 'arm' already has parent joint 'shoulder'" in "\n".join(findings)
-    status, _, stderr = _main("graph", str(path), "-o", str(tmp_path / "loop.gv"))
+    status, _, stderr = run_cli("graph", str(path), "-o", str(tmp_path / "loop.gv"))
     assert status == 1 and "already has parent joint" in stderr
     assert not (tmp_path / "loop.gv").exists()

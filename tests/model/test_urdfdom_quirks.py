@@ -23,8 +23,6 @@ axis, a link with two parents, a mesh file that is not there.
 
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 import subprocess
 from collections.abc import Callable
@@ -33,8 +31,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
-from workbench.cli import main
+from urdfdom_tools import Tools, run_cli
 
 SEEDS = 24
 INERTIAL = (
@@ -255,18 +252,6 @@ def variant(seed: int) -> tuple[str, list[Quirk]]:
 # --- running both sides ------------------------------------------------------------------
 
 
-@dataclass(frozen=True)
-class Tools:
-    check_urdf: str
-    urdf_to_graphviz: str
-
-
-@pytest.fixture
-def ros_tools(require_program) -> Tools:
-    """Debian's tools (liburdfdom-tools), or skip (fail under WORKBENCH_REQUIRE_ALL=1)."""
-    return Tools(require_program("check_urdf"), require_program("urdf_to_graphviz"))
-
-
 def _write_meshes(folder: Path) -> None:
     """A tetrahedron as OBJ and as ASCII STL, the formats real descriptions use."""
     corners = [(0, 0, 0), (0.05, 0, 0), (0, 0.05, 0), (0, 0, 0.05)]
@@ -283,13 +268,6 @@ def _write_meshes(folder: Path) -> None:
     (folder / "part.stl").write_text("\n".join(stl + ["endsolid part"]) + "\n")
 
 
-def _main(*args: str) -> tuple[int, str, str]:
-    stdout, stderr = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
-        status = main(list(args))
-    return status, stdout.getvalue(), stderr.getvalue()
-
-
 def compare(tools: Tools, path: Path, tmp_path: Path) -> tuple[bool, dict]:
     """Run both; assert what must match; returns (check_urdf accepted, workbench's JSON report)."""
     env = {"PATH": str(tmp_path / "no-programs"), "LC_ALL": "C"}
@@ -298,7 +276,7 @@ def compare(tools: Tools, path: Path, tmp_path: Path) -> tuple[bool, dict]:
     )
     ros_stderr = [line for line in ros.stderr.splitlines() if not line.startswith("         at ")]
     ros_ok = ros.returncode == 0 and not any(line.startswith("Error:") for line in ros_stderr)
-    status, stdout, stderr = _main("check", "--json", str(path))
+    status, stdout, stderr = run_cli("check", "--json", str(path))
     assert "Traceback" not in stdout + stderr
     report = json.loads(stdout)
     # The same tree and the same log lines as check_urdf (see test_urdfdom_differential.py).
@@ -314,7 +292,7 @@ def compare(tools: Tools, path: Path, tmp_path: Path) -> tuple[bool, dict]:
             env=env,
             timeout=60,
         )
-        graph_status, _, graph_error = _main("graph", str(path), "-o", str(tmp_path / "wb.gv"))
+        graph_status, _, graph_error = run_cli("graph", str(path), "-o", str(tmp_path / "wb.gv"))
         assert graph_status == 0, graph_error
         assert (tmp_path / "wb.gv").read_text() == Path(f"{ros_gv}.gv").read_text()
     else:
@@ -389,7 +367,7 @@ def test_accepted_by_urdfdom_but_broken_downstream(ros_tools, tmp_path, name, ch
     path.write_text(model.text())
     ros = subprocess.run([ros_tools.check_urdf, str(path)], capture_output=True, timeout=60)
     assert ros.returncode == 0 and b"Error" not in ros.stderr, why
-    status, stdout, _ = _main("check", "--json", str(path))
+    status, stdout, _ = run_cli("check", "--json", str(path))
     errors = [f for f in json.loads(stdout)["findings"] if f["severity"] == "error"]
     assert status == 1 and [f["element"] for f in errors] == [element], errors
 
@@ -408,7 +386,7 @@ def test_drake_warnings_keep_the_files_lines(tmp_path):
         '  <joint name="j" type="continuous">\n    <parent link="a"/><child link="b"/>\n'
         '    <dynamics damping="0.1"\n              friction="0.2"/>\n  </joint>\n</robot>\n'
     )
-    status, stdout, _ = _main("check", "--json", str(path))
+    status, stdout, _ = run_cli("check", "--json", str(path))
     report = json.loads(stdout)
     friction = [f for f in report["findings"] if "friction" in f["message"]]
     assert status == 0 and report["loaded"]
