@@ -194,14 +194,19 @@ def shipped_packages() -> dict[str, tuple[Path, str]]:
     the lab's own packages (``examples/*``)."""
     from workbench.paths import examples_dir, mapping_dir, urdf_dir
 
+    return dict(_shipped(str(urdf_dir()), str(mapping_dir()), str(examples_dir())))
+
+
+@lru_cache(maxsize=8)
+def _shipped(urdf: str, mapping: str, examples: str) -> dict[str, tuple[Path, str]]:
     found: dict[str, tuple[Path, str]] = {}
-    for folder in (urdf_dir(), mapping_dir()):
+    for folder in (Path(urdf), Path(mapping)):
         name = package_name(folder / "package.xml")
         if name:
             found.setdefault(name, (folder, ORIGIN_SHIPPED))
-    for name, folder in _shallow(str(examples_dir() / "packages")):
+    for name, folder in _shallow(str(Path(examples) / "packages")):
         found.setdefault(name, (Path(folder), ORIGIN_EMULATED))
-    for name, folder in _shallow(str(examples_dir())):  # the lab's own (learning_tf)
+    for name, folder in _shallow(examples):  # the lab's own (learning_tf)
         found.setdefault(name, (Path(folder), ORIGIN_SHIPPED))
     return found
 
@@ -265,7 +270,10 @@ def find_package(name: str, near: Path | None = None) -> Path:
     Raises:
         PackageLookupError: Not found.
     """
-    return locate_package(name, near).path
+    for found, folder, _ in candidates(near):
+        if found == name:
+            return folder  # the first one: what it shadows is not looked for
+    return locate_package(name, near).path  # raises the error naming the search path
 
 
 def all_packages(near: Path | None = None) -> dict[str, PackageLocation]:
