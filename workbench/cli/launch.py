@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from workbench.bus.launch import LaunchPlan
@@ -139,15 +139,21 @@ def load(path: Path, values: dict[str, str], dry_run: bool) -> LaunchPlan:
         LaunchError: The file is missing or malformed.
     """
     from workbench.bus.launch import load_launch
-    from workbench.model.launch_eval import evaluate_launch_expression
 
     return load_launch(
         path,
         dict(values),
         dry_run=dry_run,
         command_runner=None if dry_run else run_command,
-        evaluate=evaluate_launch_expression,
+        evaluate=_evaluate,
     )
+
+
+def _evaluate(expression: str, variables: dict[str, Any], functions: dict[str, Any]) -> Any:
+    """``$(eval)`` in xacro's sandbox, imported on the first expression (most files have none)."""
+    from workbench.model.launch_eval import evaluate_launch_expression
+
+    return evaluate_launch_expression(expression, variables, functions)
 
 
 def print_args(path: Path, values: dict[str, str]) -> int:
