@@ -9,11 +9,17 @@ workbench, and asserts what issue 17 promises for any input:
 * no hang: each input finishes within a generous bound (:func:`bounded`), else the test fails
   naming the input (a hang detector, not a performance check);
 * no file written outside the test's directory (:class:`WriteWatch`).
+
+A campaign of fresh inputs reruns the same tests outside the suite with other seeds and more
+runs: ``WORKBENCH_FUZZ_SEED`` shifts every seed (:func:`fuzz_seed`), ``WORKBENCH_FUZZ_RUNS``
+sets the number of mutants per test (:func:`fuzz_runs`), and ``WORKBENCH_FUZZ_REPORT`` names a
+file that :func:`report` appends one JSON line per test to (``benchmarks/fuzz_campaign.py``).
 """
 
 from __future__ import annotations
 
 import contextlib
+import json
 import os
 import random
 import signal
@@ -53,6 +59,31 @@ TEXT_TOKENS = [
     b": ",
     b"x" * 70000,
 ]
+
+
+def fuzz_seed(default: int) -> int:
+    """The seed of a fuzz test: ``default``, shifted by ``WORKBENCH_FUZZ_SEED`` in a campaign."""
+    return default + int(os.environ.get("WORKBENCH_FUZZ_SEED", "0")) * 1_000_003
+
+
+def fuzz_runs(default: int) -> int:
+    """The number of mutants a fuzz test makes: ``default``, or ``WORKBENCH_FUZZ_RUNS``."""
+    return int(os.environ.get("WORKBENCH_FUZZ_RUNS", str(default)))
+
+
+def report(surface: str, runs: int, **outcomes: int) -> None:
+    """Append ``{surface, runs, seed, **outcomes}`` to ``WORKBENCH_FUZZ_REPORT`` (if set).
+
+    ``outcomes`` counts how the mutants ended (accepted, refused with one line, ...); a test
+    reaches this only when every mutant passed its checks.
+    """
+    path = os.environ.get("WORKBENCH_FUZZ_REPORT")
+    if not path:
+        return
+    line = {"surface": surface, "runs": runs, "seed": os.environ.get("WORKBENCH_FUZZ_SEED", "0")}
+    line.update(outcomes)
+    with open(path, "a", encoding="utf-8") as stream:
+        stream.write(json.dumps(line) + "\n")
 
 
 class Mutator:
