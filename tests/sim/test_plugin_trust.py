@@ -14,6 +14,7 @@ import time
 from pathlib import Path
 
 import pytest
+from hostile_corpus import cases, run_case
 from sim_helpers import box_model
 
 from workbench.bus import Bus, Node
@@ -260,3 +261,17 @@ def test_the_command_line_flag_reaches_the_server():
         assert server.plugin_trust.allow_spawn_plugins is False
     finally:
         server.stop()
+
+
+@pytest.mark.parametrize(
+    "case",
+    [c for c in cases("plugins") if "this:X" in c["name"]],
+    ids=lambda case: case["name"],
+)
+def test_this_is_never_imported_from_a_world_or_the_command_line(case, tmp_path):
+    """``this:X`` would print the Zen of Python when imported: it is refused unimported."""
+    already = "this" in sys.modules
+    result = run_case(case, "plugins", tmp_path)
+    assert "is not a declared plugin class" in result["stderr"]
+    assert "Beautiful is better than ugly" not in result["stdout"]
+    assert ("this" in sys.modules) == already
