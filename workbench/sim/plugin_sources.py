@@ -66,6 +66,8 @@ MAX_PLUGIN_FILENAME = 1024
 #: A dotted module path and a class name: ``package.module:Class``.
 _MODULE_CLASS = re.compile(r"[A-Za-z_]\w*(\.[A-Za-z_]\w*)*:[A-Za-z_]\w*", re.ASCII)
 _CLASS_NAME = re.compile(r"[A-Za-z_]\w*", re.ASCII)
+#: Characters that would break a message's one line (C0 controls, DEL).
+_CONTROL = re.compile(r"[\x00-\x1f\x7f]")
 
 #: Where the plugin's code comes from (:attr:`PluginSource.origin`).
 WORKBENCH, FILE, ENTRY_POINT = "workbench", "file", "entry point"
@@ -137,7 +139,7 @@ def locate_plugin(
         SimulationError: A file that is not there, or a file name that is not a plugin.
     """
     where = f" (declared in {spec.source})" if spec.source else ""
-    _check_lengths(spec, where)
+    _check_text(spec, where)
     builtin = BUILTIN_PLUGINS.get(PurePath(spec.filename).name)
     if builtin is not None:
         module, _, class_name = builtin.partition(":")
@@ -180,22 +182,30 @@ def locate_plugin(
     )
 
 
-def _check_lengths(spec: PluginSpec, where: str) -> None:
+def _check_text(spec: PluginSpec, where: str) -> None:
     for what, value, most in (
         ("name", spec.name, MAX_PLUGIN_NAME),
         ("filename", spec.filename, MAX_PLUGIN_FILENAME),
     ):
+        name = clipped(spec.name, 80) if what == "filename" else clipped(spec.name, 43)
         if len(value) > most:
-            name = spec.name if what == "filename" else spec.name[:40] + "..."
             raise PluginRefusedError(
-                f"plugin '{clipped(name, 80)}'{where}: its {what} is {len(value):,} characters "
+                f"plugin '{name}'{where}: its {what} is {len(value):,} characters "
                 f"long, more than the {most:,} a plugin {what} may have",
                 hint=f"use a shorter {what}",
+            )
+        if _CONTROL.search(value):
+            raise PluginRefusedError(
+                f"plugin '{name}'{where}: its {what} '{clipped(value, 80)}' holds control "
+                "characters (a line break, tab or NUL)",
+                hint=f"write the {what} on one line",
             )
 
 
 def clipped(text: str, most: int = 256) -> str:
-    """``text`` as a message shows it: at most ``most`` characters."""
+    """``text`` as a message shows it: control characters escaped, at most ``most``
+    characters."""
+    text = _CONTROL.sub(lambda match: repr(match.group())[1:-1], text)
     return text if len(text) <= most else text[: most - 3] + "..."
 
 
