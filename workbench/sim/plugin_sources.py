@@ -21,8 +21,10 @@ spawned over the bus has no folder of its own (see :mod:`workbench.sim.plugin_tr
 
 from __future__ import annotations
 
+import functools
 import os
 import re
+import sys
 from dataclasses import dataclass
 from pathlib import Path, PurePath
 
@@ -263,11 +265,20 @@ def _inside(path: Path, folder: Path) -> bool:
 def _entry_point(filename: str) -> str | None:
     """``module:Class`` of the ``workbench.plugins`` entry point named ``filename`` or whose
     value it is, or None. Reads package metadata only; imports nothing."""
+    names, values = _declared(tuple(sys.path))
+    wanted = filename.replace(" ", "")
+    return names.get(filename) or (wanted if wanted in values else None)
+
+
+@functools.lru_cache(maxsize=4)
+def _declared(search_path: tuple[str, ...]) -> tuple[dict[str, str], frozenset[str]]:
+    """The declared plugins (name -> ``module:Class``, and the values) of the packages on
+    ``search_path``, read once per search path (a world may name hundreds of plugins)."""
     from importlib.metadata import entry_points
 
-    wanted = filename.replace(" ", "")
+    names: dict[str, str] = {}
     for point in entry_points(group=ENTRY_POINT_GROUP):
         value = f"{point.module}:{point.attr}"
-        if point.name == filename or value == wanted:
-            return value if _MODULE_CLASS.fullmatch(value) else None
-    return None
+        if _MODULE_CLASS.fullmatch(value):
+            names.setdefault(point.name, value)
+    return names, frozenset(names.values())
