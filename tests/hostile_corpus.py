@@ -79,6 +79,33 @@ def _directory(tmp: Path) -> str:
     return str(path)
 
 
+def _world(tmp: Path, body: str) -> str:
+    path = tmp / "world" / "hostile.world"
+    path.parent.mkdir()
+    path.write_text(f'<sdf version="1.6"><world name="hostile">{body}</world></sdf>')
+    return str(path)
+
+
+def _plugin_absolute_world(tmp: Path) -> str:
+    """A world whose plugin is a file outside its folder, named by absolute path."""
+    plugin = HOSTILE / "plugins" / "outside" / "pwned_plugin.py"
+    return _world(tmp, f'<plugin name="pwned" filename="{plugin}"/>')
+
+
+def _include_absolute_world(tmp: Path) -> str:
+    """A world including a model file outside its folder by absolute path."""
+    model = HOSTILE / "plugins" / "outside" / "pwned_model" / "model.sdf"
+    return _world(tmp, f"<include><uri>{model}</uri></include>")
+
+
+def _plugin_long_name_world(tmp: Path) -> str:
+    return _world(tmp, f'<plugin name="{"p" * 5000}" filename="model_push.py"/>')
+
+
+def _plugin_long_filename_world(tmp: Path) -> str:
+    return _world(tmp, f'<plugin name="long" filename="{"f" * 5000}.py"/>')
+
+
 #: ``make:`` name -> function(tmp folder) -> the ``{input}`` path.
 GENERATORS: dict[str, Callable[[Path], str]] = {
     "fifo": _fifo,
@@ -87,6 +114,10 @@ GENERATORS: dict[str, Callable[[Path], str]] = {
     "dev_zero": _dev_zero,
     "directory": _directory,
     "map_with_fifo_image": _map_with_fifo_image,
+    "plugin_absolute_world": _plugin_absolute_world,
+    "include_absolute_world": _include_absolute_world,
+    "plugin_long_name_world": _plugin_long_name_world,
+    "plugin_long_filename_world": _plugin_long_filename_world,
 }
 
 
@@ -115,6 +146,25 @@ def _unexpand(text: str, kind: str, tmp: Path, made: str) -> str:
     return text.replace(str(tmp), "{tmp}").replace(str(HOSTILE / kind), "{dir}")
 
 
+@contextlib.contextmanager
+def _logging_to(stream: io.StringIO) -> Any:
+    """Log records reach ``stream`` as a fresh process prints them (the message, WARNING and
+    up), whatever handlers an earlier case or test left on the root logger: Drake configures
+    logging the first time it logs, which would bind the output to that case's stream."""
+    import logging
+
+    handler = logging.StreamHandler(stream)
+    handler.setFormatter(logging.Formatter("%(message)s"))
+    handler.setLevel(logging.WARNING)
+    root = logging.getLogger()
+    saved = root.handlers[:]
+    root.handlers = [handler]
+    try:
+        yield
+    finally:
+        root.handlers = saved
+
+
 def run_case(case: dict[str, Any], kind: str, tmp: Path) -> dict[str, Any]:
     """Run one case in ``tmp``; returns ``{"status", "stderr", "stdout"}`` as the corpus has them."""
     from workbench.cli import main
@@ -125,7 +175,11 @@ def run_case(case: dict[str, Any], kind: str, tmp: Path) -> dict[str, Any]:
     cwd = Path.cwd()
     os.chdir(tmp)
     try:
-        with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
+        with (
+            contextlib.redirect_stdout(stdout),
+            contextlib.redirect_stderr(stderr),
+            _logging_to(stderr),
+        ):
             status = main(argv)
     finally:
         os.chdir(cwd)

@@ -11,12 +11,19 @@ another folder (``model://turtlebot3_autorace/traffic_stop``); in a ``<mesh>``
 it names a file (``model://NAME/meshes/base.dae``), found under the first
 search folder that has it, whether or not its folder holds a ``model.config``
 (Gazebo looks files up the same way). Paths may not climb out with ``..``.
+
+Model files are read only from the model folders (``GAZEBO_MODEL_PATH``), the
+shipped models (``urdf/``) and the folder of the world or model file that
+includes them (:func:`allowed_model_file`); a ``model.config`` names a file
+inside its own folder.
 """
 
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
+from typing import Any
 
 from lxml import etree
 
@@ -117,25 +124,88 @@ def config_file(folder: Path) -> Path:
     """The model file a model folder's ``model.config`` names (its newest SDFormat version).
 
     Raises:
-        ModelError: ``model.config`` is not XML, names no file or a missing one.
+        ModelError: ``model.config`` is not XML, names no file, a missing one or one outside
+            the folder, or gives a version that is not ``MAJOR.MINOR``.
     """
+    from workbench.model.limits import MAX_MODEL_BYTES, check_input_file
+
     config = folder / "model.config"
+    check_input_file(config, "model.config", MAX_MODEL_BYTES)
     try:
-        root = etree.parse(str(config)).getroot()
+        root = etree.parse(str(config), etree.XMLParser(resolve_entities=False)).getroot()
     except (OSError, etree.XMLSyntaxError) as error:
         raise ModelError(f"{config}: cannot read model.config: {error}") from None
     entries = root.findall("sdf")
     if not entries:
         raise ModelError(f"{config}: no <sdf> element names the model file")
-
-    def version(element: object) -> tuple[int, ...]:
-        text = getattr(element, "get", lambda *_: "0")("version", "0") or "0"
-        return tuple(int(p) for p in text.split(".") if p.isdigit())
-
-    best = max(entries, key=version)
-    path = folder / (best.text or "").strip()
-    if not path.is_file():
+    versions = [(_version(config, entry), entry) for entry in entries]
+    best = max(versions, key=lambda pair: pair[0])[1]
+    text = (best.text or "").strip()
+    where = f"{config}:{best.sourceline}"
+    shown = text if len(text) <= 80 else text[:77] + "..."
+    relative = Path(text)
+    if not text or relative.is_absolute() or ".." in relative.parts:
         raise ModelError(
-            f"{config}:{best.sourceline}: the model file '{(best.text or '').strip()}' is missing"
+            f"{where}: the model file '{shown}' is not inside the model folder",
+            hint="name a file of the model's own folder, e.g. <sdf version='1.6'>model.sdf</sdf>",
         )
+    path = folder / relative
+    if not path.is_file():
+        raise ModelError(f"{where}: the model file '{shown}' is missing")
     return path
+
+
+def _version(config: Path, entry: Any) -> tuple[int, ...]:
+    """An ``<sdf version>`` as numbers (none given: the oldest).
+
+    Raises:
+        ModelError: A version that is not dot-separated ASCII digits (``1.²``, ``one``).
+    """
+    text = (entry.get("version") or "").strip()
+    if not text:
+        return (0,)
+    if not re.fullmatch(r"[0-9]{1,6}(\.[0-9]{1,6}){0,3}", text, re.ASCII):
+        shown = text if len(text) <= 40 else text[:37] + "..."
+        raise ModelError(
+            f"{config}:{entry.sourceline}: <sdf version='{shown}'> is not an SDFormat version",
+            hint="write it as MAJOR.MINOR, e.g. version='1.6'",
+        )
+    return tuple(int(part) for part in text.split("."))
+
+
+def allowed_model_file(
+    file: Path, including: Path | None, *, uri: str, line: int | None, top: Path | None = None
+) -> Path:
+    """``file`` when a model file may be read from there, for an include in ``including``.
+
+    Model files are read only under ``GAZEBO_MODEL_PATH``, the shipped models (``urdf/``),
+    and the folders of the file that includes them and of the file the chain of includes
+    started from (``top``: the world). A model given as text (a spawn request) has no folder.
+
+    Raises:
+        ModelError: ``file`` lies elsewhere (an absolute path, or ``..`` climbing out).
+    """
+    from workbench.paths import urdf_dir
+
+    roots = [*model_search_path(), urdf_dir()]
+    roots += [p.parent for p in (including, top) if p is not None]
+    if any(_under(file, root) for root in roots):
+        return file
+    shown = uri if len(uri) <= 80 else uri[:77] + "..."
+    raise ModelError(
+        f"<include> of '{shown}': model files are read only from GAZEBO_MODEL_PATH, the "
+        "shipped models and the including file's folder",
+        path=including,
+        line=line,
+        hint="add the model's folder to GAZEBO_MODEL_PATH and include it as model://NAME",
+    )
+
+
+def _under(file: Path, root: Path) -> bool:
+    """Whether ``file`` lies in ``root``, by the names as written or as the links lead."""
+    try:
+        if Path(os.path.normpath(file)).is_relative_to(os.path.normpath(root)):
+            return True
+        return file.resolve().is_relative_to(root.resolve())
+    except (OSError, ValueError, RuntimeError):
+        return False

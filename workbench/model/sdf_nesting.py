@@ -157,7 +157,7 @@ def _included_model(
             line=line,
             hint="include it without merge: its links are then named MODEL::LINK",
         )
-    file = include_file(uri, path, line)
+    file = include_file(uri, path, line, top=chain[0] if chain else None)
     if depth + 1 > MAX_INCLUDE_DEPTH:
         raise ModelError(
             f"<include> of {uri}: models include each other more than {MAX_INCLUDE_DEPTH} deep",
@@ -199,19 +199,36 @@ def _included_model(
     return inner
 
 
-def include_file(uri: str, path: Path | None, line: int | None) -> Path:
+def include_file(uri: str, path: Path | None, line: int | None, *, top: Path | None = None) -> Path:
     """The model file an ``<include>``'s ``<uri>`` names: ``model://NAME`` (a model folder's
     ``model.config`` entry), a model folder or an SDF file (absolute, ``file://`` or relative
-    to ``path``).
+    to ``path``), which must lie where model files are read from
+    (:func:`workbench.model.gazebo_models.allowed_model_file`; ``top``: the file the chain of
+    includes started from).
 
     Raises:
-        ModelError: Nothing found, naming ``path`` and ``line``.
+        ModelError: Nothing found, or a file outside the model folders, naming ``path`` and
+            ``line``.
     """
-    from workbench.model.gazebo_models import find_model_file, model_search_path
+    from workbench.model.gazebo_models import (
+        allowed_model_file,
+        find_model_file,
+        model_search_path,
+        uri_path,
+    )
 
     base = path.parent if path is not None else Path.cwd()
     if uri.startswith("model://"):
         name = uri[len("model://") :]
+        if uri_path(name) is None:
+            shown = uri if len(uri) <= 80 else uri[:77] + "..."
+            raise ModelError(
+                f"cannot resolve {shown}: a model:// URI names a folder inside the model "
+                "folders and may not climb out with '..'",
+                path=path,
+                line=line,
+                hint="write model://NAME (GAZEBO_MODEL_PATH lists the model folders)",
+            )
         try:
             file = find_model_file(name)
         except ModelError as error:
@@ -234,10 +251,14 @@ def include_file(uri: str, path: Path | None, line: int | None) -> Path:
         )
     target = Path(uri.removeprefix("file://"))
     target = target if target.is_absolute() else base / target
+    allowed_model_file(target, path, uri=uri, line=line, top=top)
     if target.is_dir() and (target / "model.config").is_file():
         from workbench.model.gazebo_models import config_file
 
-        return config_file(target)
+        try:
+            return config_file(target)
+        except ModelError as error:
+            raise ModelError(error.message, path=path, line=line, hint=error.hint) from None
     if not target.is_file():
         raise ModelError(
             f"<include> of '{uri}': no such file or model folder", path=path, line=line

@@ -170,7 +170,7 @@ class GazeboRosApi:
                 request.model_xml, name=name or None, source=f"spawn request '{name}'"
             )
             model = with_robot_namespace(model, request.robot_namespace)
-            self.server.spawn(model, X_WM)
+            self.server.spawn(model, X_WM, from_bus=True)
         except _NoFrame:
             return _spawn_reply(
                 False,

@@ -43,6 +43,7 @@ class ServerOptions:
     port: int | None = None
     start_core: bool = True
     record: bool = False
+    allow_spawn_plugins: bool = False
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -72,6 +73,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         metavar="[MODEL=]FILE",
         help="load a world plugin, or a model plugin for MODEL (repeatable)",
     )
+    parser.add_argument(
+        "--allow-spawn-plugins",
+        action="store_true",
+        help="let models spawned over the bus load any plugin file or declared class, not "
+        "only those the world loads: anyone who can reach the bus can then run code here",
+    )
     parser.add_argument("--headless", action="store_true", help="no Meshcat view")
     parser.add_argument("--contacts", action="store_true", help="draw contact forces")
     parser.add_argument("--port", type=int, help="Meshcat port (default: first free from 7000)")
@@ -92,6 +99,7 @@ def options_from(args: argparse.Namespace) -> ServerOptions:
         view=not args.headless or bool(args.html),
         contacts=args.contacts,
         port=args.port,
+        allow_spawn_plugins=args.allow_spawn_plugins,
     )
 
 
@@ -148,7 +156,13 @@ def build_server(options: ServerOptions, bus: Any = None) -> tuple[Any, Any, Any
         speed = rtf
     else:
         speed = physics.real_time_factor or 1.0
-    server = SimServer(world, bus=bus, paused=options.paused, real_time_factor=speed)
+    server = SimServer(
+        world,
+        bus=bus,
+        paused=options.paused,
+        real_time_factor=speed,
+        allow_spawn_plugins=options.allow_spawn_plugins,
+    )
     if view is not None:
         view.attach(server)
     for spec in world_file.plugins:
@@ -164,15 +178,26 @@ def build_server(options: ServerOptions, bus: Any = None) -> tuple[Any, Any, Any
 
 
 def _command_line_plugin(filename: str, model: str) -> Any:
+    """The plugin ``--plugin`` names: the user typed it, so a file may be anywhere (one in
+    the working folder is found first, then the plugin path's)."""
+    from xml.sax.saxutils import quoteattr
+
     from workbench.sim.model_spec import PluginSpec
 
-    name = Path(filename.partition(":")[0]).stem
+    file, colon, class_name = filename.partition(":")
+    name = Path(file).stem
+    try:
+        here = file.endswith(".py") and Path(file).is_file()
+    except (OSError, ValueError):
+        here = False
+    if here:
+        filename = str(Path(file).resolve()) + colon + class_name
     return PluginSpec(
         name=name,
         filename=filename,
-        element=f'<plugin name="{name}" filename="{filename}"/>',
+        element=f"<plugin name={quoteattr(name)} filename={quoteattr(filename)}/>",
         kind="model" if model else "world",
-        base_dir=Path.cwd(),
+        base_dir=None,
         source="--plugin",
     )
 

@@ -16,9 +16,11 @@ It is attached with ``<plugin name="push" filename="model_push.py"/>`` in an SDF
 model or world, in a URDF ``<gazebo>`` block, or with ``workbench sim --plugin``.
 ``filename`` is a Python file (looked up beside the file that declares it, then
 in ``GAZEBO_PLUGIN_PATH`` and ``WORKBENCH_PLUGIN_PATH``, then in workbench's
-``examples/gazebo/plugins``) or an entry point ``package.module:Class``. The
-file must define exactly one plugin class (a subclass of :class:`Plugin`), or
-name it: ``my_plugin.py:MyPlugin``.
+``examples/gazebo/plugins``) or a class an installed package declares as a
+``workbench.plugins`` entry point (``package.module:Class``). Nothing else is
+imported: :mod:`workbench.sim.plugin_sources` has the rule. The file must define
+exactly one plugin class (a subclass of :class:`Plugin`), or name it:
+``my_plugin.py:MyPlugin``.
 
 ``update`` runs before every physics step, or every ``1 / update_rate`` seconds
 of simulated time when the class (or the ``<update_rate>`` parameter) sets one.
@@ -34,7 +36,6 @@ from __future__ import annotations
 import importlib
 import importlib.util
 import logging
-import os
 import sys
 import traceback
 from dataclasses import dataclass
@@ -45,42 +46,35 @@ from lxml import etree
 
 from workbench.errors import SimulationError
 from workbench.sim.model_spec import PluginSpec
+from workbench.sim.plugin_sources import (
+    BUILTIN_PLUGINS,
+    PluginRefusedError,
+    PluginSource,
+    UnavailablePluginError,
+    locate_plugin,
+    plugin_search_path,
+)
+
+__all__ = [
+    "BUILTIN_PLUGINS",
+    "ModelPlugin",
+    "Plugin",
+    "PluginRefusedError",
+    "PluginSetupError",
+    "SdfElement",
+    "SensorPlugin",
+    "UnavailablePluginError",
+    "UpdateInfo",
+    "WorldPlugin",
+    "describe_failure",
+    "load_plugin_class",
+    "plugin_search_path",
+]
 
 if TYPE_CHECKING:
     from workbench.sim.handles import ModelHandle, WorldHandle
 
 _LOG = logging.getLogger("workbench.sim.plugins")
-
-#: Gazebo's ROS plugins that workbench provides, by their library name: ``module:Class``.
-#: A ``<plugin filename="libgazebo_ros_diff_drive.so">`` in a model loads the class here.
-BUILTIN_PLUGINS: dict[str, str] = {
-    # gazebo_ros drive and state plugins (workbench.sim.gazebo_ros_plugins)
-    "libgazebo_ros_diff_drive.so": "workbench.sim.gazebo_ros_plugins.diff_drive:GazeboRosDiffDrive",
-    "libgazebo_ros_joint_state_publisher.so": (
-        "workbench.sim.gazebo_ros_plugins.joint_state_publisher:GazeboRosJointStatePublisher"
-    ),
-    "libgazebo_ros_planar_move.so": (
-        "workbench.sim.gazebo_ros_plugins.planar_move:GazeboRosPlanarMove"
-    ),
-    "libgazebo_ros_control.so": "workbench.sim.ros_control.plugin:GazeboRosControl",
-    "libgazebo_ros_imu.so": "workbench.sim.gazebo_ros_plugins.imu:GazeboRosImu",
-    "libgazebo_ros_p3d.so": "workbench.sim.gazebo_ros_plugins.p3d:GazeboRosP3D",
-    "libgazebo_ros_ft_sensor.so": "workbench.sim.gazebo_ros_plugins.ft_sensor:GazeboRosFT",
-    # gazebo_ros sensor plugins (workbench.sim.sensors)
-    "libgazebo_ros_laser.so": "workbench.sim.sensors.laser_plugin:GazeboRosLaser",
-    "libgazebo_ros_gpu_laser.so": "workbench.sim.sensors.laser_plugin:GazeboRosLaser",
-    "libgazebo_ros_camera.so": "workbench.sim.sensors.camera_plugin:GazeboRosCamera",
-    "libgazebo_ros_openni_kinect.so": "workbench.sim.sensors.camera_plugin:GazeboRosOpenniKinect",
-    "libgazebo_ros_depth_camera.so": "workbench.sim.sensors.camera_plugin:GazeboRosDepthCamera",
-    "libgazebo_ros_imu_sensor.so": "workbench.sim.sensors.imu_plugin:GazeboRosImuSensor",
-    "libgazebo_ros_bumper.so": "workbench.sim.sensors.bumper_plugin:GazeboRosBumper",
-    # Gazebo's own model plugins (workbench.sim.gazebo_plugins)
-    "libFollowerPlugin.so": "workbench.sim.gazebo_plugins.follower:FollowerPlugin",
-}
-
-
-class UnavailablePluginError(SimulationError):
-    """A Gazebo plugin library workbench does not provide: the model runs without it."""
 
 
 class PluginSetupError(SimulationError):
@@ -180,71 +174,33 @@ class SensorPlugin(ModelPlugin):
     kind = "sensor"
 
 
-def plugin_search_path(base_dir: Path | None) -> list[Path]:
-    """Folders a plugin file name is looked up in, first match wins."""
-    from workbench.paths import examples_dir
-
-    folders = [base_dir] if base_dir is not None else []
-    for variable in ("GAZEBO_PLUGIN_PATH", "WORKBENCH_PLUGIN_PATH"):
-        folders += [Path(p) for p in os.environ.get(variable, "").split(os.pathsep) if p]
-    folders.append(examples_dir() / "gazebo" / "plugins")
-    return folders
-
-
-def load_plugin_class(spec: PluginSpec) -> type[Plugin]:
+def load_plugin_class(spec: PluginSpec, source: PluginSource | None = None) -> type[Plugin]:
     """The plugin class ``spec.filename`` names.
 
+    Args:
+        spec: The plugin.
+        source: Where its code is, as :func:`~workbench.sim.plugin_sources.locate_plugin`
+            found it (None: found here, by the rule for a world's plugins).
+
     Raises:
+        PluginRefusedError: A file or class the rule does not allow (nothing was read).
+        UnavailablePluginError: A Gazebo library workbench does not provide.
         SimulationError: The file is missing, cannot be imported, or defines no
             (or several) plugin classes; the message names the file.
     """
-    filename, _, class_name = spec.filename.partition(":")
+    source = source if source is not None else locate_plugin(spec)
+    if source.path is not None:
+        return _plugin_class(
+            _import_file(source.path, spec), source.class_name, spec, str(source.path)
+        )
     where = f" (declared in {spec.source})" if spec.source else ""
-    builtin = BUILTIN_PLUGINS.get(Path(spec.filename).name)
-    if builtin is not None:
-        module_name, _, class_name = builtin.partition(":")
-        return _plugin_class(importlib.import_module(module_name), class_name, spec, builtin)
-    if filename.startswith("lib") and filename.endswith(".so"):
-        provided = ", ".join(sorted(BUILTIN_PLUGINS)) or "none"
-        raise UnavailablePluginError(
-            f"Gazebo plugin '{filename}' ('{spec.name}'{where}) is not provided by workbench; "
-            "the model runs without it",
-            hint=f"workbench provides {provided}, and Python plugins (README: gazebo_ros plugins)",
-        )
-    if filename.endswith(".py"):
-        path = _find_file(filename, spec.base_dir)
-        if path is None:
-            folders = ", ".join(str(p) for p in plugin_search_path(spec.base_dir))
-            raise SimulationError(
-                f"plugin '{spec.name}': file '{filename}' not found{where}",
-                hint=f"looked in {folders}; add folders to GAZEBO_PLUGIN_PATH",
-            )
-        module = _import_file(path, spec)
-        source = str(path)
-    elif class_name:
-        try:
-            module = importlib.import_module(filename)
-        except Exception as error:  # noqa: BLE001 - any import failure is the plugin's
-            raise SimulationError(
-                f"plugin '{spec.name}': cannot import '{filename}'{where}: {error}"
-            ) from None
-        source = filename
-    else:
+    try:
+        module = importlib.import_module(source.module)
+    except Exception as error:  # noqa: BLE001 - any import failure is the plugin's
         raise SimulationError(
-            f"plugin '{spec.name}': '{spec.filename}' is not a Python plugin{where}",
-            hint="give a .py file or module:Class (Gazebo's C++ plugins do not run here)",
-        )
-    return _plugin_class(module, class_name, spec, source)
-
-
-def _find_file(filename: str, base_dir: Path | None) -> Path | None:
-    candidate = Path(filename).expanduser()
-    if candidate.is_absolute():
-        return candidate if candidate.is_file() else None
-    for folder in plugin_search_path(base_dir):
-        if (folder / candidate).is_file():
-            return (folder / candidate).resolve()
-    return None
+            f"plugin '{spec.name}': cannot import '{source.module}'{where}: {error}"
+        ) from None
+    return _plugin_class(module, source.class_name, spec, source.key)
 
 
 def _import_file(path: Path, spec: PluginSpec) -> Any:

@@ -32,6 +32,7 @@ import numpy as np
 
 from workbench.errors import SimulationError
 from workbench.sim.model_spec import PluginSpec, SimModel
+from workbench.sim.plugin_trust import PluginTrust
 from workbench.sim.plugins import (
     Plugin,
     PluginSetupError,
@@ -100,6 +101,8 @@ class SimServer:
         paused: Start paused (Gazebo's ``-u``).
         real_time_factor: Target sim/wall speed ratio; ``0`` or ``inf``: as fast as possible.
         chunk: Simulated time advanced between hooks when nothing needs finer steps, s.
+        allow_spawn_plugins: Let models spawned over the bus load any plugin file or
+            declared class, not only those the world loaded (:mod:`workbench.sim.plugin_trust`).
     """
 
     def __init__(
@@ -111,6 +114,7 @@ class SimServer:
         real_time_factor: float = 1.0,
         chunk: float = 0.01,
         meshcat: Any = None,
+        allow_spawn_plugins: bool = False,
     ) -> None:
         if not (real_time_factor >= 0):
             raise SimulationError(f"real_time_factor must be >= 0, got {real_time_factor}")
@@ -129,6 +133,7 @@ class SimServer:
         self._loop_thread: threading.Thread | None = None
         self._running_in: int | None = None
         self._plugins: list[_PluginSlot] = []
+        self.plugin_trust = PluginTrust(allow_spawn_plugins=allow_spawn_plugins)
         self._api_jobs: list[_Job] = []
         self._pace_reset = True
         self._step_request = 0.0
@@ -306,8 +311,26 @@ class SimServer:
         X_WM: Any = None,
         *,
         joint_positions: Mapping[str, float] | None = None,
+        from_bus: bool = False,
     ) -> None:
-        """Add ``model`` (with its plugins) at ``X_WM``; the running world keeps going."""
+        """Add ``model`` (with its plugins) at ``X_WM``; the running world keeps going.
+
+        Args:
+            model: The model.
+            X_WM: Where it goes (a RigidTransform, ``[x, y, z]`` or ``{"xyz", "rpy"}``).
+            joint_positions: Initial joint positions, by joint name.
+            from_bus: The model came in a spawn request: it may only use the plugins the
+                world allowed (:mod:`workbench.sim.plugin_trust`).
+
+        Raises:
+            PluginRefusedError: ``from_bus`` and a plugin the world did not allow; nothing
+                was added and nothing of the plugin was read.
+        """
+        if from_bus:
+            for spec in model.plugins:
+                refusal = self.plugin_trust.refusal(spec)
+                if refusal is not None:
+                    raise refusal
 
         def work() -> None:
             self.world.add_model(model, X_WM, joint_positions=joint_positions)
@@ -322,7 +345,7 @@ class SimServer:
             for spec in model.plugins:
                 if spec.sensor and spec.sensor in bad:
                     continue  # the sensor's own error was logged; the model runs without it
-                self.load_plugin(spec, model.name)
+                self.load_plugin(spec, model.name, spawned=from_bus)
 
         self.call(work)
 
@@ -367,10 +390,19 @@ class SimServer:
 
     # --- plugins ---------------------------------------------------------------------
 
-    def load_plugin(self, spec: PluginSpec, model: str | None = None) -> Plugin | None:
-        """Load and start a plugin; failures are logged (file and line) and the plugin skipped."""
+    def load_plugin(
+        self, spec: PluginSpec, model: str | None = None, *, spawned: bool = False
+    ) -> Plugin | None:
+        """Load and start a plugin; failures are logged (file and line) and the plugin skipped.
+
+        A plugin of the world (``spawned`` False) is allowed for spawned models from now on;
+        one of a model spawned over the bus must be allowed already
+        (:mod:`workbench.sim.plugin_trust`).
+        """
+        trust = self.plugin_trust
         try:
-            cls = load_plugin_class(spec)
+            source = trust.admit_spawned(spec) if spawned else trust.admit(spec)
+            cls = load_plugin_class(spec, source)
         except UnavailablePluginError as error:
             owner = f"model '{model}': " if model else ""
             _LOG.warning("%s%s", owner, error.one_line())
