@@ -159,12 +159,34 @@ class ObstacleLayer(Layer):
                 try:
                     buffer.buffer_scan(msg, self.tf_buffer, self.clock())
                 except ExtrapolationException as error:
-                    if "future" in str(error):
+                    if self._ahead_of_tf(buffer, msg):
                         break  # wait for newer transforms
                     self._warn(buffer.topic, "Message dropped for %s: %s", buffer.topic, error)
                 except TransformException:
                     break
                 del queue[0]
+
+    def _ahead_of_tf(self, buffer: ObservationBuffer, msg: Any) -> bool:
+        """Whether ``msg`` is newer than tf's latest transform into the global frame.
+
+        tf2's message filter holds such a scan until its transform arrives. The error text
+        does not tell: when the walk from the scan frame stops at a missing odometry
+        transform, tf2 explains the lookup by the link above the global frame (amcl's
+        ``map -> odom``), which may read "into the past".
+        """
+        from workbench.tf import TransformException
+        from workbench.tf.timeconv import to_ns
+
+        scan_frame = str(msg.header.frame_id)
+        frames = {scan_frame, buffer.sensor_frame or scan_frame}
+        try:
+            latest = min(
+                self.tf_buffer.get_latest_common_time(buffer.global_frame, f) for f in frames
+            )
+            stamp = to_ns(msg.header.stamp)
+        except TransformException:
+            return False
+        return latest != 0 and stamp > latest
 
     def _warn(self, key: str, text: str, *args: Any) -> None:
         now = time.monotonic()
