@@ -432,6 +432,37 @@ def test_a_scan_waits_for_its_transform_under_a_moving_parent_of_the_global_fram
     assert "Message dropped" not in capsys.readouterr().err
 
 
+def test_a_scan_arriving_during_an_update_does_not_wait_for_it(bus):
+    # the scan callback runs on the thread that delivers messages (Zenoh's, for another
+    # process): waiting there for a long update would hold up /tf and /clock as well
+    set_params(bus, NS, GLOBAL_PARAMS)
+    s = Setup(bus)
+    costmap = s.start()
+    stamp = s.place(0.5, 0.0, 0.0)
+    ranges = [math.inf] * 360
+    ranges[90] = 0.725
+    update_running, update_done = threading.Event(), threading.Event()
+
+    def long_update() -> None:
+        with costmap._lock:
+            update_running.set()
+            update_done.wait(60.0)
+
+    updater = threading.Thread(target=long_update)
+    updater.start()
+    try:
+        assert update_running.wait(10.0)
+        publisher = threading.Thread(target=s.scan, args=(ranges, stamp))
+        publisher.start()
+        assert wait_for(lambda: not publisher.is_alive(), 10.0)
+    finally:
+        update_done.set()
+        updater.join()
+    costmap.update()  # the next update places the scan
+    obstacles = costmap.layer("obstacle_layer")
+    assert np.argwhere(obstacles.grid.costs == 254).tolist() == [[54, 52]]
+
+
 def test_map_type_voxel_becomes_a_voxel_layer_read_as_obstacles(bus, capsys):
     set_params(bus, NS, {**GLOBAL_PARAMS, "map_type": "voxel", "z_voxels": 10})
     costmap = Setup(bus).start()
