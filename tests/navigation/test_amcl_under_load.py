@@ -147,3 +147,31 @@ def test_amcl_catches_up_after_falling_behind_and_takes_a_pose_estimate_at_once(
         assert amcl.wait_idle()
         assert wait_until(lambda s=stamp: watcher.current(s))
     assert watcher.error(truth[k], odom[k]) < 0.15
+
+
+def test_a_scan_older_than_the_tf_cache_is_dropped_at_once_with_tf2s_lines(bus, capsys):
+    robot = Robot(bus, amcl_map())
+    robot.tick(robot.t)
+    robot.mount()
+    serve_map(bus)
+    truth = tour()[:60]
+    odom = noisy_odometry(truth)
+    amcl = start(bus, {"max_particles": 500, **initial_guess(truth[0], offset=(0, 0, 0))})
+    assert wait_until(lambda: amcl.localizer is not None)
+    for k in range(60):  # 12 s of odometry
+        robot.step(truth[k], odom[k])
+        assert amcl.wait_idle()
+    processed = amcl.processed
+    # a scan 11 s old (a bag replayed without its clock, say): tf forgot its odometry
+    old = robot.scan_msg(truth[0], robot.t - 11.0)
+    player = Node("player", bus=bus, disable_rosout=True)
+    player.create_publisher("/scan", type(old), 1).publish(old)
+    assert amcl.wait_idle()
+    assert amcl.dropped == 1 and amcl.processed == processed
+    output = Output(capsys)
+    assert output.has(
+        "  The majority of dropped messages were due to messages growing older than the TF "
+        f"cache time.  The last message's timestamp was: {robot.t - 11.0:f}, and the last "
+        "frame_id was: laser"
+    )
+    assert 'scans in frame "laser" are dropped' not in output.text  # the frame is fine

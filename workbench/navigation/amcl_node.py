@@ -15,9 +15,9 @@ the node around it behaves as amcl's:
   dropped, so a node that fell behind is current again with the next scan); a scan
   whose frame tf cannot connect within 0.5 s, or whose stamp fell out of the tf cache,
   is dropped with tf2's ``MessageFilter [target=odom]: Dropped ...`` warning (and a
-  line naming a frame that never connects). The laser's mounting is looked up once per frame; the
-  odometry is ``~odom_frame_id -> ~base_frame_id`` at the scan's stamp (``Failed to
-  compute odom pose, skipping scan (...)``). NaN and inf readings are skipped;
+  line naming a frame that never connects). The laser's mounting is looked up once per
+  frame; the odometry is ``~odom_frame_id -> ~base_frame_id`` at the scan's stamp
+  (``Failed to compute odom pose, skipping scan (...)``). NaN and inf readings are skipped;
 * publishes the latched ``amcl_pose`` (``geometry_msgs/PoseWithCovarianceStamped``,
   stamped with the scan) after each resample, ``particlecloud``
   (``geometry_msgs/PoseArray``) after each filter update, and ``~global_frame_id ->
@@ -274,7 +274,10 @@ class Amcl:
         from workbench.tf.timeconv import to_ns
 
         target, stamp = self.params.odom_frame_id, scan.msg.header.stamp
-        answer = self.buffer.can_transform(target, scan.frame, stamp, return_debug_tuple=True)
+        try:
+            answer = self.buffer.can_transform(target, scan.frame, stamp, return_debug_tuple=True)
+        except Exception as error:  # a stamp tf cannot read: the scan waits out its time
+            return MISSING, str(error)
         ok, why = answer if isinstance(answer, tuple) else (answer, "")
         if ok:
             return READY, ""
