@@ -214,6 +214,12 @@ class Amcl:
             self._push_control("map", response.map)
             return
 
+    @property
+    def busy(self) -> bool:
+        """Whether scans, initial poses or maps wait, or one is being handled."""
+        with self._cond:
+            return bool(self._control or len(self._scans) or self._busy)
+
     def wait_idle(self, timeout: float = 30.0) -> bool:
         """Wait until everything received so far has been handled (for tests and scripts)."""
         deadline = time.monotonic() + timeout
