@@ -177,7 +177,7 @@ class Stack:
         while True:
             while self.bus.spin_once(0.0):
                 pass
-            if amcl is None or not (amcl._queue or amcl._busy):
+            if amcl is None or not amcl.busy:
                 return
             if self.last_scan is not None and not amcl.buffer.can_transform(
                 "odom", "base_footprint", self.last_scan

@@ -140,7 +140,7 @@ def spin_nodes():
     while True:
         while bus.spin_once(0.0):
             pass
-        if not (amcl._queue or amcl._busy):
+        if not amcl.busy:
             return
         if last_scan[0] is not None and not amcl.buffer.can_transform(
             "odom", "base_footprint", last_scan[0]

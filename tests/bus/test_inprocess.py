@@ -9,6 +9,7 @@ import threading
 import time
 
 import pytest
+from process_helpers import wait_for
 
 from workbench.bus import (
     AnyMsg,
@@ -181,6 +182,36 @@ def test_timer_and_sim_time(bus):
         drain(bus)
     assert node2.now() == Time(2.0)
     assert ticks == [0.5, 1.0, 1.5, 2.0]
+
+
+@pytest.mark.parametrize("threaded", [False, True])
+def test_a_timer_starts_over_when_simulated_time_jumps_back(threaded):
+    # a simulation reset: the timers of amcl, the costmaps and move_base must tick again
+    # from the new time, not wait until it reaches where the old one was
+    with Bus(threaded=threaded) as bus:
+        bus.params.set("/use_sim_time", True)
+        node = Node("timed", bus=bus)
+        clock_pub = node.create_publisher("/clock", Clock)
+        ticks: list[float] = []
+        node.create_timer(0.5, lambda event: ticks.append(event.current_real.to_sec()))
+
+        def advance(to: float, until, pace: bool = False) -> bool:
+            t = bus.clock.now_ns() / 1e9
+            while t < to - 1e-9:
+                t = min(t + 0.1, to)
+                clock_pub.publish(Clock(clock=Time(t)))
+                if not threaded:
+                    drain(bus)
+                # (give the timer's thread the time to look at the clock)
+                if pace and wait_for(until, 0.02, poll=0.005):
+                    return True
+            return wait_for(until, 5.0, poll=0.01)
+
+        assert advance(10.0, lambda: ticks and ticks[-1] >= 9.9), ticks
+        clock_pub.publish(Clock(clock=Time(0.0)))  # /gazebo/reset_simulation
+        before = len(ticks)
+        assert advance(5.0, lambda: len(ticks) >= before + 2, pace=True), ticks
+        assert all(t < 3.0 for t in ticks[before:]), ticks
 
 
 def test_threaded_executor_runs_callbacks_in_the_background():

@@ -4,7 +4,7 @@ The world is line segments (:mod:`workbench.mapping.simulate`): a 6 x 4 m room w
 box in the middle. The robot integrates the last ``/cmd_vel`` (a planar twist in its own
 frame) into ``odom -> base_footprint``, publishes ``/odom`` with that twist, a 360-beam
 ``/scan`` from ``base_scan`` by ray casting and the room as a latched ``/map``
-(``map -> odom`` is the identity). It records the closest it came to any wall.
+(``map -> odom`` is the identity, or left to a localiser). It records the closest it came to any wall.
 """
 
 from __future__ import annotations
@@ -62,7 +62,13 @@ def _tf(
 class KinematicRobot:
     """The simulated robot on ``bus`` (a stepped bus on simulated time)."""
 
-    def __init__(self, bus: Bus, pose: tuple[float, float, float], radius: float = 0.15) -> None:
+    def __init__(
+        self,
+        bus: Bus,
+        pose: tuple[float, float, float],
+        radius: float = 0.15,
+        map_to_odom: bool = True,
+    ) -> None:
         self.bus = bus
         self.pose = np.array(pose, dtype=float)
         self.radius = radius
@@ -78,14 +84,10 @@ class KinematicRobot:
         self.scan_pub = self.node.create_publisher("/scan", LaserScan, 10)
         map_pub = self.node.create_publisher("/map", OccupancyGrid, 1, latch=True)
         now = self.node.now()
-        static.publish(
-            TFMessage(
-                transforms=[
-                    _tf("map", "odom", 0, 0, 0, 0.0, now),
-                    _tf("base_footprint", "base_scan", 0.0, 0, 0.2, 0.0, now),
-                ]
-            )
-        )
+        mounts = [_tf("base_footprint", "base_scan", 0.0, 0, 0.2, 0.0, now)]
+        if map_to_odom:  # without it, a localiser (amcl) sends map -> odom
+            mounts.insert(0, _tf("map", "odom", 0, 0, 0, 0.0, now))
+        static.publish(TFMessage(transforms=mounts))
         msg = map_message(self.segments)
         msg.header.stamp = now
         map_pub.publish(msg)

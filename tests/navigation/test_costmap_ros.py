@@ -404,6 +404,65 @@ def test_a_scan_waits_for_its_transform_and_keeps_only_the_newest(bus):
     assert np.argwhere(obstacles.grid.costs == 254).tolist() == [[54, 52]]  # (0.6, 0.725)
 
 
+def test_a_scan_waits_for_its_transform_under_a_moving_parent_of_the_global_frame(bus, capsys):
+    # amcl's map -> odom above a local costmap in odom: tf2 explains the scan that came before
+    # its odometry by that link ("only time ... is in the buffer"); the scan still waits
+    from costmap_world import transform
+
+    from workbench.msgs.tf2_msgs import TFMessage
+
+    set_params(bus, NS, GLOBAL_PARAMS)
+    s = Setup(bus)
+    costmap = s.start()
+    first = s.place(0.0, 0.0, 0.0)
+    above = transform("earth", "map", (0, 0, 0), 0.0, first)
+    s.world.tf_pub.publish(TFMessage(transforms=[above]))
+    assert wait_for(lambda: s.buffer.can_transform("earth", "base_link", first))
+    later = Time.from_sec(first.to_sec() + 0.05)
+    ranges = [math.inf] * 360
+    ranges[90] = 0.725
+    s.scan(ranges, later)
+    costmap.update()
+    obstacles = costmap.layer("obstacle_layer")
+    assert (obstacles.grid.costs == 254).sum() == 0
+    s.world.publish_pose(0.5, 0.0, 0.0, later)
+    assert wait_for(lambda: s.buffer.can_transform("odom", "base_link", later))
+    costmap.update()
+    assert np.argwhere(obstacles.grid.costs == 254).tolist() == [[54, 52]]
+    assert "Message dropped" not in capsys.readouterr().err
+
+
+def test_a_scan_arriving_during_an_update_does_not_wait_for_it(bus):
+    # the scan callback runs on the thread that delivers messages (Zenoh's, for another
+    # process): waiting there for a long update would hold up /tf and /clock as well
+    set_params(bus, NS, GLOBAL_PARAMS)
+    s = Setup(bus)
+    costmap = s.start()
+    stamp = s.place(0.5, 0.0, 0.0)
+    ranges = [math.inf] * 360
+    ranges[90] = 0.725
+    update_running, update_done = threading.Event(), threading.Event()
+
+    def long_update() -> None:
+        with costmap._lock:
+            update_running.set()
+            update_done.wait(60.0)
+
+    updater = threading.Thread(target=long_update)
+    updater.start()
+    try:
+        assert update_running.wait(10.0)
+        publisher = threading.Thread(target=s.scan, args=(ranges, stamp))
+        publisher.start()
+        assert wait_for(lambda: not publisher.is_alive(), 10.0)
+    finally:
+        update_done.set()
+        updater.join()
+    costmap.update()  # the next update places the scan
+    obstacles = costmap.layer("obstacle_layer")
+    assert np.argwhere(obstacles.grid.costs == 254).tolist() == [[54, 52]]
+
+
 def test_map_type_voxel_becomes_a_voxel_layer_read_as_obstacles(bus, capsys):
     set_params(bus, NS, {**GLOBAL_PARAMS, "map_type": "voxel", "z_voxels": 10})
     costmap = Setup(bus).start()

@@ -65,17 +65,27 @@ class Clock:
         """Call ``listener()`` whenever simulated time changes."""
         self._listeners.append(listener)
 
-    def sleep_until_ns(self, deadline_ns: int, stop: threading.Event | None = None) -> None:
+    def sleep_until_ns(
+        self, deadline_ns: int, stop: threading.Event | None = None, back: bool = False
+    ) -> None:
         """Sleep until the clock reaches ``deadline_ns``.
+
+        Args:
+            deadline_ns: When to wake (integer nanoseconds of this clock).
+            stop: Ends the sleep with :class:`ShutdownInterrupt` when set.
+            back: Also wake when simulated time jumps backwards (a simulation reset).
 
         Raises:
             ShutdownInterrupt: ``stop`` was set while sleeping.
         """
+        start_ns = self._sim_ns
         while True:
             if stop is not None and stop.is_set():
                 raise ShutdownInterrupt("sleep interrupted by shutdown")
             if self._sim:
                 with self._cond:
+                    if back and self._sim_ns < start_ns:
+                        return
                     if self._sim_ns >= deadline_ns or not self._sim:
                         if self._sim:
                             return

@@ -464,6 +464,8 @@ class Timer:
     callback itself runs on the executor, and its errors are logged there), the error
     is logged with the node and timer and the thread starts over, up to
     :attr:`MAX_RESTARTS` times in a row; then the timer stops with a fatal log line.
+    When simulated time jumps backwards (a simulation reset), the period starts over from
+    the new time, as roscpp's timers do (they would otherwise wait for the old time).
     """
 
     #: Consecutive failures of the timer thread before the timer gives up.
@@ -489,6 +491,7 @@ class Timer:
         self._clock = node.bus.clock
         self._schedule = node.bus.executor.schedule
         self.next_ns = self._clock.now_ns() + int(self.period * 1e9)
+        self._polled_ns = self.next_ns - int(self.period * 1e9)
         self._last_expected: int | None = None
         self._last_real: int | None = None
         self._last_duration: float | None = None
@@ -530,7 +533,13 @@ class Timer:
     def _tick(self) -> None:
         clock = self._clock
         while not self._stop.is_set():
-            clock.sleep_until_ns(self.next_ns, self._stop)
+            clock.sleep_until_ns(self.next_ns, self._stop, back=True)
+            now = clock.now_ns()
+            if now < self.next_ns:
+                # time jumped backwards (a simulation reset): count the period from now, as
+                # roscpp's timers do, instead of waiting for the old time to come back
+                self.next_ns = now + int(self.period * 1e9)
+                continue
             self._due = True
             self._schedule(self)
             if self.oneshot:
@@ -545,6 +554,9 @@ class Timer:
         if self.closed or self._due:
             return self._due
         now = self._clock.now_ns()
+        if now < self._polled_ns:  # time jumped backwards (a simulation reset)
+            self.next_ns = now + int(self.period * 1e9)
+        self._polled_ns = now
         if now >= self.next_ns:
             self._due = True
             self.next_ns = self.next_ns + int(self.period * 1e9)

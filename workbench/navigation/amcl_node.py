@@ -9,12 +9,15 @@ the node around it behaves as amcl's:
   logging ``Requesting the map...`` and ``Request for map failed; trying again...``
   every 0.5 s until it answers. Each map logs ``Received a W X H map @ R m/pix``
   and restarts the filter at ``~initial_pose_*`` / ``~initial_cov_*``;
-* ``scan`` (``sensor_msgs/LaserScan``): a scan waits briefly for ``~odom_frame_id ->
-  scan frame`` in tf, as amcl's tf message filter holds it; a scan whose frame never
-  gets there is dropped with tf2's ``MessageFilter [target=odom]: Dropped ...`` warning
-  and a line naming the frame. The laser's mounting is looked up once per frame; the
-  odometry is ``~odom_frame_id -> ~base_frame_id`` at the scan's stamp (``Failed to
-  compute odom pose, skipping scan (...)``). NaN and inf readings are skipped;
+* ``scan`` (``sensor_msgs/LaserScan``): a scan waits for ``~odom_frame_id -> scan
+  frame`` in tf, as amcl's tf message filter holds it (:mod:`amcl_scan_queue`: at most
+  100; the newest scan whose transform is known goes first and the older ones are
+  dropped, so a node that fell behind is current again with the next scan); a scan
+  whose frame tf cannot connect within 0.5 s, or whose stamp fell out of the tf cache,
+  is dropped with tf2's ``MessageFilter [target=odom]: Dropped ...`` warning (and a
+  line naming a frame that never connects). The laser's mounting is looked up once per
+  frame; the odometry is ``~odom_frame_id -> ~base_frame_id`` at the scan's stamp
+  (``Failed to compute odom pose, skipping scan (...)``). NaN and inf readings are skipped;
 * publishes the latched ``amcl_pose`` (``geometry_msgs/PoseWithCovarianceStamped``,
   stamped with the scan) after each resample, ``particlecloud``
   (``geometry_msgs/PoseArray``) after each filter update, and ``~global_frame_id ->
@@ -26,8 +29,11 @@ the node around it behaves as amcl's:
   ``request_nomotion_update`` (``std_srvs/Empty``) and ``set_map`` (``nav_msgs/SetMap``);
 * saves its pose into ``~initial_pose_*`` / ``~initial_cov_*`` every ``1 / ~save_pose_rate`` s.
 
-Scans, initial poses and maps are handled in arrival order on one worker thread.
-SIGINT and SIGTERM stop the node cleanly.
+Scans, initial poses and maps are handled on one worker thread; initial poses (the last
+2, as amcl's subscriber queue) and maps go before the scans waiting in the filter, so a
+2D Pose Estimate takes effect with the next scan even when amcl is behind. The
+``No laser scan received`` warning measures, as amcl's, bus time since the last scan
+that passed the filter. SIGINT and SIGTERM stop the node cleanly.
 """
 
 from __future__ import annotations
@@ -55,14 +61,25 @@ from workbench.navigation.amcl_messages import (
     yaw_in_base,
 )
 from workbench.navigation.amcl_params import AmclParams, read_params, strip_slash
+from workbench.navigation.amcl_scan_queue import (
+    MISSING,
+    NEVER,
+    NO_TRANSFORM,
+    QUEUE,
+    READY,
+    WAIT,
+    Dropped,
+    HeldScan,
+    ScanQueue,
+)
 
-#: Wall seconds a scan waits for its transforms (amcl's message filter holds it meanwhile).
+#: Wall seconds a scan waits for tf to connect its frame to the odometry frame.
 TF_WAIT = 0.5
-#: Wall seconds between two looks at tf while a scan waits (a fast simulation sends the
+#: Wall seconds between two looks at tf while scans wait (a fast simulation sends the
 #: odometry for a scan's stamp within a millisecond or two).
-TF_POLL = 0.0005
-#: Scans held at most (the message filter's queue size).
-QUEUE = 100
+TF_POLL = 0.002
+#: Initial poses and maps held at most (amcl's subscriber queues: ``initialpose`` 2, ``map`` 1).
+CONTROL_QUEUES = {"pose": 2, "map": 1}
 #: Bus seconds without scans before amcl warns (``laser_check_interval_``).
 LASER_CHECK_INTERVAL = 15.0
 #: The parameters amcl re-reads with each map (``updatePoseFromServer``).
@@ -88,7 +105,8 @@ class Amcl:
     Attributes:
         localizer: The filter, once a map arrived.
         received: Scans that arrived; ``processed``: scans handled; ``dropped``: scans
-            dropped for lack of a transform.
+            dropped for lack of a transform; ``skipped``: scans dropped unprocessed because
+            a newer one was ready (or more than 100 waited) while amcl was busy.
         last_estimate: What the last processed scan produced.
     """
 
@@ -103,11 +121,12 @@ class Amcl:
         self.log = node.get_logger()
         self.params = params if params is not None else read_params(node)
         self.localizer: Localizer | None = None
-        self.received = self.processed = self.dropped = 0
+        self.received = self.processed = self.dropped = self.skipped = 0
         self.last_estimate = Estimate()
         self._lock = threading.RLock()
         self._cond = threading.Condition()
-        self._queue: collections.deque = collections.deque(maxlen=QUEUE)
+        self._control: collections.deque = collections.deque()
+        self._scans = ScanQueue(QUEUE, TF_WAIT)
         self._busy = False
         self._stopping = False
         self._lasers: dict[str, tuple[float, float, Any]] = {}
@@ -139,7 +158,7 @@ class Amcl:
         self.pose_sub = node.create_subscription(
             "initialpose",
             PoseWithCovarianceStamped,
-            lambda m: self._push("pose", m),
+            lambda m: self._push_control("pose", m),
             2,
             inline=True,
         )
@@ -157,21 +176,28 @@ class Amcl:
         self.timer = node.create_timer(LASER_CHECK_INTERVAL, self._check_laser_received)
 
     # ------------------------------------------------------------------ inputs
-    def _push(self, kind: str, msg: Any) -> None:
+    def _push_control(self, kind: str, msg: Any) -> None:
         with self._cond:
-            self._queue.append((kind, msg))
+            queued = [item for item in self._control if item[0] == kind]
+            if len(queued) >= CONTROL_QUEUES[kind]:  # a full subscriber queue drops the oldest
+                self._control.remove(queued[0])
+            self._control.append((kind, msg))
             self._cond.notify()
 
     def _on_scan(self, msg: Any) -> None:
+        scan = HeldScan(msg, strip_slash(str(msg.header.frame_id)), time.monotonic())
         with self._cond:
             self.received += 1
-        self._push("scan", msg)
+            pushed_out = self._scans.add(scan)
+            if pushed_out is not None:
+                self.skipped += 1
+            self._cond.notify()
 
     def _on_map(self, msg: Any) -> None:
         if self.params.first_map_only and self._maps > 0:
             return
         self._maps += 1
-        self._push("map", msg)
+        self._push_control("map", msg)
 
     def _request_map(self) -> None:
         from workbench.msgs.nav_msgs import GetMap
@@ -185,14 +211,20 @@ class Amcl:
                 self.log.warn("Request for map failed; trying again...")
                 time.sleep(0.5)
                 continue
-            self._push("map", response.map)
+            self._push_control("map", response.map)
             return
+
+    @property
+    def busy(self) -> bool:
+        """Whether scans, initial poses or maps wait, or one is being handled."""
+        with self._cond:
+            return bool(self._control or len(self._scans) or self._busy)
 
     def wait_idle(self, timeout: float = 30.0) -> bool:
         """Wait until everything received so far has been handled (for tests and scripts)."""
         deadline = time.monotonic() + timeout
         with self._cond:
-            while self._queue or self._busy:
+            while self._control or len(self._scans) or self._busy:
                 remaining = deadline - time.monotonic()
                 if remaining <= 0:
                     return False
@@ -210,16 +242,27 @@ class Amcl:
     def _work(self) -> None:
         while True:
             with self._cond:
-                while not self._queue and not self._stopping:
+                while not self._control and not len(self._scans) and not self._stopping:
                     self._cond.wait()
                 if self._stopping:
                     return
-                kind, msg = self._queue.popleft()
+                scan: HeldScan | None = None
+                dropped: list[Dropped] = []
+                if self._control:
+                    kind, msg = self._control.popleft()
+                else:
+                    kind, msg = "scan", None
+                    scan, dropped = self._scans.take(self._scan_status, time.monotonic())
+                    if scan is None and not dropped:
+                        self._cond.wait(TF_POLL)  # the scans wait for their transforms
+                        continue
                 self._busy = True
             try:
                 with self._lock:
                     if kind == "scan":
-                        self._scan_arrived(msg)
+                        self._report_dropped(dropped)
+                        if scan is not None:
+                            self.laser_received(scan.msg)
                     elif kind == "pose":
                         self.handle_initial_pose(msg)
                     else:
@@ -231,43 +274,75 @@ class Amcl:
                     self._busy = False
                     self._cond.notify_all()
 
-    def _wait_for_tf(self, target: str, source: str, stamp: Any) -> tuple[bool, str]:
-        deadline = time.monotonic() + TF_WAIT
-        while True:
-            answer = self.buffer.can_transform(target, source, stamp, return_debug_tuple=True)
-            ok, why = answer if isinstance(answer, tuple) else (answer, "")
-            if ok or time.monotonic() > deadline or self._stopping:
-                return bool(ok), str(why)
-            time.sleep(TF_POLL)
+    def _scan_status(self, scan: HeldScan) -> tuple[str, str]:
+        """Where ``odom -> scan frame`` stands at the scan's stamp (tf2's message filter test)."""
+        from workbench.tf import TransformException
+        from workbench.tf.timeconv import to_ns
 
-    def _scan_arrived(self, msg: Any) -> None:
-        """The tf message filter: pass the scan on once ``odom -> frame`` is known at its stamp."""
-        frame = strip_slash(str(msg.header.frame_id))
+        target, stamp = self.params.odom_frame_id, scan.msg.header.stamp
+        try:
+            answer = self.buffer.can_transform(target, scan.frame, stamp, return_debug_tuple=True)
+        except Exception as error:  # a stamp tf cannot read: the scan waits out its time
+            return MISSING, str(error)
+        ok, why = answer if isinstance(answer, tuple) else (answer, "")
+        if ok:
+            return READY, ""
+        try:
+            latest = self.buffer.get_latest_common_time(target, scan.frame)
+            t = to_ns(stamp)
+        except TransformException:
+            return MISSING, str(why)
+        # tf2's BufferCore refuses to wait for a stamp further behind the newest transform
+        # than the cache keeps: the message filter drops such a message at once
+        if latest and t + round(self.buffer.cache_time * 1e9) < latest:
+            return NEVER, str(why)
+        if t > latest:
+            return WAIT, str(why)
+        return MISSING, str(why)
+
+    def _report_dropped(self, dropped: list[Dropped]) -> None:
+        """Count the scans the filter dropped and warn as tf2's message filter does."""
+        behind = [d for d in dropped if d.reason != NO_TRANSFORM]
+        if behind:
+            self.skipped += len(behind)
+            self.log.debug(
+                "amcl is behind: %d older scan(s) dropped for the newest one", len(behind)
+            )
+        for item in dropped:
+            if item.reason == NO_TRANSFORM:
+                self._drop_for_tf(item)
+
+    def _drop_for_tf(self, item: Dropped) -> None:
         p = self.params
-        ok, why = self._wait_for_tf(p.odom_frame_id, frame, msg.header.stamp)
-        if not ok:
-            self.dropped += 1
-            now = time.monotonic()
-            if now >= self._next_drop_warning:
-                self._next_drop_warning = now + DROP_WARNING_PERIOD
-                share = 100.0 * self.dropped / max(self.received, 1)
+        frame, why = item.scan.frame, item.why
+        self.dropped += 1
+        now = time.monotonic()
+        if now >= self._next_drop_warning:
+            self._next_drop_warning = now + DROP_WARNING_PERIOD
+            share = 100.0 * self.dropped / max(self.received, 1)
+            self.log.warn(
+                "MessageFilter [target=%s]: Dropped %.2f%% of messages so far. Please turn "
+                "the [ros.amcl.message_notifier] rosconsole logger to DEBUG for more information.",
+                p.odom_frame_id,
+                share,
+            )
+            if item.state == NEVER:
                 self.log.warn(
-                    "MessageFilter [target=%s]: Dropped %.2f%% of messages so far. Please turn "
-                    "the [ros.amcl.message_notifier] rosconsole logger to DEBUG for more information.",
-                    p.odom_frame_id,
-                    share,
-                )
-            if frame not in self._bad_frames:
-                self._bad_frames.add(frame)
-                reason = why.splitlines()[0] if why else "no transform"
-                self.log.warn(
-                    'scans in frame "%s" are dropped: no transform to "%s" at their stamp (%s)',
+                    "  The majority of dropped messages were due to messages growing older than "
+                    "the TF cache time.  The last message's timestamp was: %f, and the last "
+                    "frame_id was: %s",
+                    item.scan.msg.header.stamp.to_sec(),
                     frame,
-                    p.odom_frame_id,
-                    reason,
                 )
-            return
-        self.laser_received(msg)
+        if frame not in self._bad_frames and item.state != NEVER:
+            self._bad_frames.add(frame)
+            reason = why.splitlines()[0] if why else "no transform"
+            self.log.warn(
+                'scans in frame "%s" are dropped: no transform to "%s" at their stamp (%s)',
+                frame,
+                p.odom_frame_id,
+                reason,
+            )
 
     # ------------------------------------------------------------------ scans
     def _laser_setup(self, frame: str) -> tuple[float, float, Any] | None:

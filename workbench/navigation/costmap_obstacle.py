@@ -12,6 +12,7 @@ higher than the layer's ``max_obstacle_height``. The layer keeps its own grid
 
 from __future__ import annotations
 
+import threading
 import time
 from typing import Any
 
@@ -132,6 +133,7 @@ class ObstacleLayer(Layer):
             self.buffers.append(buffer)
         self.grid = Costmap2D(np.zeros((1, 1), np.uint8), 0.05, 0.0, 0.0, layered.global_frame)
         self.pending: dict[int, list[Any]] = {id(b): [] for b in self.buffers}
+        self._pending_lock = threading.Lock()  # the transport's thread adds, updates take
         self.footprint_cells: np.ndarray | None = None
         self.current = True
         self.tf_buffer: Any = None
@@ -140,11 +142,16 @@ class ObstacleLayer(Layer):
     # ------------------------------------------------------------------ data in
     def on_scan(self, buffer: ObservationBuffer, msg: Any) -> None:
         """A scan for ``buffer`` arrived: place it now, or when its transform is there."""
-        queue = self.pending[id(buffer)]
-        queue.append(msg)
-        if len(queue) > PENDING_LIMIT:
-            del queue[0]
+        self.hold(buffer, msg)
         self.flush_pending()
+
+    def hold(self, buffer: ObservationBuffer, msg: Any) -> None:
+        """Queue a scan for ``buffer`` (at most ``PENDING_LIMIT``: the oldest goes first)."""
+        with self._pending_lock:
+            queue = self.pending[id(buffer)]
+            queue.append(msg)
+            if len(queue) > PENDING_LIMIT:
+                del queue[0]
 
     def flush_pending(self) -> None:
         """Place the waiting scans whose transforms became available (oldest first)."""
@@ -154,17 +161,44 @@ class ObstacleLayer(Layer):
             return
         for buffer in self.buffers:
             queue = self.pending[id(buffer)]
-            while queue:
-                msg = queue[0]
+            while True:
+                with self._pending_lock:
+                    if not queue:
+                        break
+                    msg = queue[0]
                 try:
                     buffer.buffer_scan(msg, self.tf_buffer, self.clock())
                 except ExtrapolationException as error:
-                    if "future" in str(error):
+                    if self._ahead_of_tf(buffer, msg):
                         break  # wait for newer transforms
                     self._warn(buffer.topic, "Message dropped for %s: %s", buffer.topic, error)
                 except TransformException:
                     break
-                del queue[0]
+                with self._pending_lock:
+                    if queue and queue[0] is msg:  # (unless a full queue pushed it out)
+                        del queue[0]
+
+    def _ahead_of_tf(self, buffer: ObservationBuffer, msg: Any) -> bool:
+        """Whether ``msg`` is newer than tf's latest transform into the global frame.
+
+        tf2's message filter holds such a scan until its transform arrives. The error text
+        does not tell: when the walk from the scan frame stops at a missing odometry
+        transform, tf2 explains the lookup by the link above the global frame (amcl's
+        ``map -> odom``), which may read "into the past".
+        """
+        from workbench.tf import TransformException
+        from workbench.tf.timeconv import to_ns
+
+        scan_frame = str(msg.header.frame_id)
+        frames = {scan_frame, buffer.sensor_frame or scan_frame}
+        try:
+            latest = min(
+                self.tf_buffer.get_latest_common_time(buffer.global_frame, f) for f in frames
+            )
+            stamp = to_ns(msg.header.stamp)
+        except TransformException:
+            return False
+        return latest != 0 and stamp > latest
 
     def _warn(self, key: str, text: str, *args: Any) -> None:
         now = time.monotonic()

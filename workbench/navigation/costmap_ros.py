@@ -188,7 +188,7 @@ class CostmapROS:
                     self.node.create_subscription(
                         buffer.topic,
                         LaserScan,
-                        lambda msg, layer=obstacles, b=buffer: self._locked(layer.on_scan, b, msg),
+                        lambda msg, layer=obstacles, b=buffer: self._on_scan(layer, b, msg),
                         50,
                         inline=True,
                     )
@@ -201,6 +201,16 @@ class CostmapROS:
                 "supported are costmap_2d::StaticLayer, costmap_2d::ObstacleLayer (or "
                 "VoxelLayer, read as an obstacle layer) and costmap_2d::InflationLayer"
             )
+
+    def _on_scan(self, layer: ObstacleLayer, buffer: Any, msg: Any) -> None:
+        # This runs on the transport's thread: it must not wait for an update in progress
+        # (that would hold up every message to this process); the update places the scan.
+        layer.hold(buffer, msg)
+        if self._lock.acquire(blocking=False):
+            try:
+                layer.flush_pending()
+            finally:
+                self._lock.release()
 
     def _locked(self, function: Any, *args: Any) -> None:
         with self._lock:
