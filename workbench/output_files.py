@@ -49,6 +49,14 @@ KINDS: dict[str, tuple[str, Callable[[bytes], bool]]] = {
         "an SRDF written by workbench setup",
         lambda head: b"Semantic description of the robot for planning" in head,
     ),
+    "building-sdf": (
+        "an SDF file written by workbench world build",
+        lambda head: b"<sdf" in head and b"Written by 'workbench world build'" in head,
+    ),
+    "building-model-config": (
+        "a model.config written by workbench world build",
+        lambda head: b"<model" in head and b"Written by 'workbench world build'" in head,
+    ),
 }
 
 

@@ -74,7 +74,7 @@ BAD_PLANS = [
     ("walls: []", "the plan has no walls"),
     ("image: map.pgm\nresolution: 0.05", "this is a map_server map, not a building plan"),
     ("- just a list", "the plan must be a mapping of keys to values, got list"),
-    ("walls: [{start: [0, 0", "not YAML"),
+    ("walls: [{start: [0, 0", "plan file is not valid YAML"),
     (
         _walls("{name: w, start: [0, 0], end: [3, 0]}")
         + "stairs: [{from: ground, to: attic, start: [0, 0], length: 2}]",
@@ -144,6 +144,7 @@ def test_the_cli_builds_a_world_and_lists_the_shipped_ones(run_cli, repo_root, t
     assert result.returncode == 0, result.stderr
     assert "building 'lab_room': 1 level, 4 walls, 1 door" in result.stdout
     assert f"wrote {out}" in result.stdout and out.is_file()
+    (tmp_path / "models").mkdir()
     folder = tmp_path / "models" / "lab_room"
     result = run_cli(
         "world", "build", repo_root / "mapping" / "demo_rooms.yaml", "-o", folder, "--model"
