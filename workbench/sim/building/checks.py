@@ -8,6 +8,7 @@ from collections.abc import Iterator
 
 import numpy as np
 
+from workbench.model.limits import name_problem, shown_name
 from workbench.sim.building.plan import EPS, BuildingPlan, Level, Wall
 
 
@@ -68,6 +69,9 @@ def _unique_names(plan: BuildingPlan) -> None:
     for kind, name in names:
         if not name:
             raise plan.error(f"a {kind} has an empty name")
+        problem = name_problem(name)
+        if problem is not None:
+            raise plan.error(f"the {kind} name '{shown_name(name)}' {problem}", "use a short name")
         if "/" in name or "::" in name or name != name.strip():
             raise plan.error(
                 f"the {kind} name '{name}' has '/', '::' or surrounding spaces",
