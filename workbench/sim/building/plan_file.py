@@ -233,11 +233,13 @@ class _Reader:
             raise self.error(f"{what} must be a mapping of keys to values, got {_kind(value)}")
         for key in value:
             if key not in keys:
-                close = difflib.get_close_matches(str(key), sorted(keys), n=1)
+                text = str(key) if isinstance(key, str) else _shown(key)
+                close = difflib.get_close_matches(text[:100], sorted(keys), n=1)
                 hint = (
                     f"did you mean '{close[0]}'?" if close else "keys: " + ", ".join(sorted(keys))
                 )
-                raise self.error(f"{what}: unknown key '{key}'", hint)
+                shown = text if len(text) <= 40 else text[:37] + "..."
+                raise self.error(f"{what}: unknown key '{shown}'", hint)
         return value
 
     def sequence(self, value: Any, what: str, most: int | None = None) -> list[Any]:
@@ -272,12 +274,13 @@ class _Reader:
         if (
             isinstance(value, bool)
             or not isinstance(value, int | float)
-            or not math.isfinite(value)
+            or (isinstance(value, float) and not math.isfinite(value))
         ):
             raise self.error(f"{what}: '{key}' must be a number, got {_shown(value)}")
-        if abs(value) > MAX_PLAN_NUMBER:
+        if not _within(value):
             raise self.error(
-                f"{what}: '{key}' is {value:g}, beyond the {MAX_PLAN_NUMBER:,.0f} a plan allows"
+                f"{what}: '{key}' is {_shown(value)}, beyond the {MAX_PLAN_NUMBER:,.0f} a plan "
+                "allows"
             )
         return float(value)
 
@@ -300,7 +303,7 @@ class _Reader:
             not isinstance(value, list | tuple)
             or len(value) != 2
             or not all(isinstance(v, int | float) and not isinstance(v, bool) for v in value)
-            or not all(math.isfinite(v) and abs(v) <= MAX_PLAN_NUMBER for v in value)
+            or not all(_within(v) for v in value)
         ):
             raise self.error(
                 f"{what} must be a point [x, y] in m, each within {MAX_PLAN_NUMBER:,.0f}, "
@@ -424,7 +427,7 @@ class _Reader:
             raise self.error(f"{what}: 'steps' must be a whole number, got {_shown(steps)}")
         if not 1 <= steps <= MAX_STEPS:
             raise self.error(
-                f"{what}: 'steps' must be 1 to {MAX_STEPS:,}, got {steps:g}",
+                f"{what}: 'steps' must be 1 to {MAX_STEPS:,}, got {_shown(steps)}",
                 "a flight has a step every 15 to 20 cm",
             )
         for key in ("from", "to"):
@@ -467,7 +470,7 @@ class _Reader:
                 not isinstance(raw, list)
                 or len(raw) != 3
                 or not all(isinstance(v, int | float) and not isinstance(v, bool) for v in raw)
-                or not all(math.isfinite(v) and abs(v) <= MAX_PLAN_NUMBER for v in raw)
+                or not all(_within(v) for v in raw)
             ):
                 raise self.error(
                     f"{what} needs 'size: [x, y, z]' in m, each within {MAX_PLAN_NUMBER:,.0f}, "
@@ -570,6 +573,12 @@ def parse_colour(value: Any, what: str, source: str | None = None) -> Colour:
 _SHORT = reprlib.Repr()
 _SHORT.maxlevel, _SHORT.maxlist, _SHORT.maxdict = 3, 4, 4
 _SHORT.maxstring = _SHORT.maxother = _SHORT.maxlong = 40
+
+
+def _within(value: float) -> bool:
+    """A finite number of magnitude at most :data:`MAX_PLAN_NUMBER` (NaN is not; a 400-digit
+    integer is compared exactly, never converted to a float)."""
+    return abs(value) <= MAX_PLAN_NUMBER
 
 
 def _shown(value: Any) -> str:
