@@ -163,6 +163,30 @@ def _drain(node: Any) -> None:
             break
 
 
+#: Bounds of ``bag play``'s options: a rate of 1e-300 would wait forever between two
+#: messages, a start of 1e308 s overflows a ROS time (at most 2^32 s).
+MIN_RATE, MAX_RATE = 1e-3, 1e6
+MAX_DELAY = 86_400.0
+MAX_START = float(2**32)
+
+
+def check_play_options(rate: float, delay: float, start: float) -> None:
+    """Refuse ``-r``, ``-d`` and ``-s`` values that are not finite or out of their bounds.
+
+    Raises:
+        BagError: The first bad value, naming the option and its bound.
+    """
+    if not MIN_RATE <= rate <= MAX_RATE:  # NaN fails every comparison
+        raise BagError(
+            f"--rate must be a speed factor from {MIN_RATE:g} to {MAX_RATE:g}, got {rate:g}",
+            hint="use -r 0.5 for half speed",
+        )
+    if not 0 <= delay <= MAX_DELAY:
+        raise BagError(f"--delay must be 0 to {MAX_DELAY:,.0f} seconds, got {delay:g}")
+    if not 0 <= start <= MAX_START:
+        raise BagError(f"--start must be 0 to {MAX_START:,.0f} seconds into the bag, got {start:g}")
+
+
 def play(
     bag: str,
     *,
@@ -196,10 +220,7 @@ def play(
     from workbench.bus import Node
     from workbench.msgs import get_type
 
-    if not rate > 0:
-        raise BagError(f"--rate must be positive, got {rate:g}")
-    if delay < 0 or start < 0:
-        raise BagError("--delay and --start must not be negative")
+    check_play_options(rate, delay, start)
     renamed = _remaps(list(remaps))
     summary = summarize(bag)  # its damage is reported once, as the playback reads it
     playable = _playable(summary, topics)

@@ -24,6 +24,7 @@ also in a background job, and it exits with 130 or 143 (see
 from __future__ import annotations
 
 import argparse
+import errno
 import importlib
 import importlib.util
 import os
@@ -201,3 +202,18 @@ def _dispatch(args: list[str], debug: bool = False) -> int:
         # `workbench topic echo ... | head` closes stdout early: not an error.
         sys.stderr.close()
         return 0
+    except OSError as error:
+        # A name the file system refuses outright (a 5,000-character argument looked up as
+        # a file): bad input wherever it is first touched, not a bug.
+        if error.errno != errno.ENAMETOOLONG or debug:
+            raise
+        return _report(command, _name_too_long(error))
+
+
+def _name_too_long(error: OSError) -> WorkbenchError:
+    name = os.fsdecode(error.filename) if error.filename is not None else ""
+    shown = name if len(name) <= 60 else name[:57] + "..."
+    return WorkbenchError(
+        f"the file name '{shown}' ({len(name):,} characters) is too long for the file system",
+        hint="a file name has at most 255 characters per folder and 4,096 in all",
+    )
