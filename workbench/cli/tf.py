@@ -9,6 +9,11 @@ import sys
 import time
 from typing import Any
 
+from workbench.cli.values import check_rate, check_seconds
+
+#: Longest axis ``tf view --scale`` draws, m.
+MAX_SCALE = 1000.0
+
 
 def configure(parser: argparse.ArgumentParser) -> None:
     verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
@@ -131,6 +136,8 @@ def echo(
         raise TransformError(f"--count must be at least 1, got {count}")
     if timeout is not None and not timeout > 0:
         raise TransformError(f"--timeout must be positive, got {timeout}")
+    check_rate(rate, "--rate", TransformError)
+    check_seconds(timeout, "--timeout", TransformError)
     node, buffer, _ = _listener()
     period = 1.0 / rate
     started = time.monotonic()
@@ -181,6 +188,7 @@ def frames(*, duration: float = 5.0, out: str = "frames.pdf", yaml: bool = False
 
     if not duration >= 0:
         raise TransformError(f"--duration must not be negative, got {duration}")
+    check_seconds(duration, "--duration", TransformError, zero=True)
     node, buffer, _ = _listener()
     try:
         print(f"Listening to tf data during {duration:g} seconds...", file=sys.stderr)
@@ -230,6 +238,10 @@ def view(
         raise TransformError(f"--scale and --rate must be positive, got {scale}, {rate}")
     if duration is not None and not duration > 0:
         raise TransformError(f"--duration must be positive, got {duration}")
+    check_rate(rate, "--rate", TransformError)
+    check_seconds(duration, "--duration", TransformError)
+    if not scale <= MAX_SCALE:
+        raise TransformError(f"--scale must be at most {MAX_SCALE:g}, got {scale:g}")
     from workbench.viz import Viewer
     from workbench.viz.frames import TfDisplay
 

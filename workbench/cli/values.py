@@ -33,7 +33,7 @@ def check_seconds(
     """
     if value is None:
         return
-    low = "0" if zero else "above 0"
+    low = "of 0 or more" if zero else "above 0"
     if not (math.isfinite(value) and (value >= 0 if zero else value > 0)):
         raise error(f"{option} must be a number of seconds {low}, got {value:g}")
     if value > MAX_SECONDS:
