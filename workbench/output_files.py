@@ -60,6 +60,11 @@ KINDS: dict[str, tuple[str, Callable[[bytes], bool]]] = {
 }
 
 
+def _short(text: str) -> str:
+    """A path for a message: a 5,000-character one is cut to 100."""
+    return text if len(text) <= 100 else text[:97] + "..."
+
+
 def _is_dir(path: Path) -> bool:
     try:
         return path.is_dir()
@@ -95,11 +100,11 @@ def check_output(
     """
     path = Path(path)
     what, looks_ours = KINDS[kind]
-    label = f"{option} {path}" if option else str(path)
+    label = f"{option} {_short(str(path))}" if option else _short(str(path))
     folder = path.parent if str(path.parent) else Path(".")
     if not _is_dir(folder):
         raise _refuse(
-            f"cannot write {label}: the folder {folder} does not exist",
+            f"cannot write {label}: the folder {_short(str(folder))} does not exist",
             "create it first; workbench does not create folders",
             error,
         )
