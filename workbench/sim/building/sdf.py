@@ -118,6 +118,8 @@ def check_building_output(
     """
     from workbench.output_files import check_output
 
+    if not os.fspath(path).strip():
+        raise PlanError("no output given: -o needs a .world/.sdf file or a folder")
     target = Path(path)
     folder = _is_dir(target)
     if kind == "model" and (folder or not target.suffix):
