@@ -179,17 +179,21 @@ def test_tf_rejects_bad_numbers(call, message):
 @pytest.mark.parametrize(
     ("options", "message"),
     [
-        ({"samples": -1}, "--samples must be >= 0"),
-        ({"seed": -2}, "--seed must not be negative"),
+        ({"samples": -1}, "--samples must be 0 to 1,000,000"),
+        ({"samples": 10**20}, "--samples must be 0 to 1,000,000"),
+        ({"seed": -2}, r"--seed must be 0 to 2\^32 - 1"),
         ({"velocity_scaling": 1.5}, r"--velocity-scaling must be in \(0, 1\]"),
-        ({"edge_resolution": 0}, "--edge-resolution must be positive"),
+        ({"edge_resolution": 0}, "--edge-resolution must be above 0 and at most pi"),
+        ({"edge_resolution": math.inf}, "--edge-resolution must be above 0 and at most pi"),
+        ({"group": "g" * 5000}, "--group 'ggg.*' has 5,000 characters; at most 256"),
+        ({"output": ""}, "-o needs the folder"),
         ({"controller": "pd"}, "unknown controller 'pd'"),
         ({"planner": "RRTfoo"}, "unknown planner 'RRTfoo'"),
     ],
 )
 def test_setup_checks_its_options_before_sampling(tmp_path, options, message):
     with pytest.raises(PlanningError, match=message):
-        setup.setup("robot_arm", output=str(tmp_path / "cfg"), **options)
+        setup.setup("robot_arm", **{"output": str(tmp_path / "cfg"), **options})
     assert not (tmp_path / "cfg").exists()
 
 

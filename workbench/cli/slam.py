@@ -9,6 +9,10 @@ from pathlib import Path
 
 from workbench.errors import MappingError
 
+#: Largest --resolution (cell size) and --max-range, m.
+MAX_RESOLUTION = 10.0
+MAX_RANGE = 1000.0
+
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Add the command's arguments."""
@@ -113,6 +117,12 @@ def slam(
         raise MappingError(f"--resolution must be a positive number of metres, got {resolution}")
     if not (max_range > 0 and np.isfinite(max_range)):
         raise MappingError(f"--max-range must be a positive number of metres, got {max_range}")
+    if resolution > MAX_RESOLUTION or max_range > MAX_RANGE:
+        raise MappingError(
+            f"--resolution must be at most {MAX_RESOLUTION:g} m and --max-range at most "
+            f"{MAX_RANGE:g} m, got {resolution:g} and {max_range:g}",
+            hint="a lab map has cells of a few centimetres and a laser of tens of metres",
+        )
     target = Path(out)
     if target.suffix in (".yaml", ".pgm", ".png"):
         target = target.with_suffix("")
