@@ -254,10 +254,12 @@ class _Reader:
             )
         return value
 
-    def count(self, attribute: str, added: int, what: str, most: int) -> None:
-        """Add ``added`` to the plan's tally of ``what``; refuse it past ``most``."""
+    def count(self, attribute: str, added: int, what: str, most: int, *, keep: bool = True) -> None:
+        """Add ``added`` to the plan's tally of ``what`` (only check, unless ``keep``);
+        refuse it past ``most``."""
         total = getattr(self, attribute) + added
-        setattr(self, attribute, total)
+        if keep:
+            setattr(self, attribute, total)
         if total > most:
             raise self.error(
                 f"the plan has more than {most:,} {what}", "split the building into several plans"
@@ -360,12 +362,9 @@ class _Reader:
         if "points" in doc:
             if "start" in doc or "end" in doc:
                 raise self.error(f"{what} has both 'points' and 'start'/'end'", "give one of them")
-            points = [
-                self.point(p, f"{what}: point {i}")
-                for i, p in enumerate(
-                    self.sequence(doc["points"], f"{what}: 'points'", MAX_PLAN_WALLS + 1)
-                )
-            ]
+            point_docs = self.sequence(doc["points"], f"{what}: 'points'")
+            self.count("walls_read", len(point_docs) - 1, "walls", MAX_PLAN_WALLS, keep=False)
+            points = [self.point(p, f"{what}: point {i}") for i, p in enumerate(point_docs)]
             if doc.get("closed", False) is True and points:
                 points.append(points[0])
             if len(points) < 2:
