@@ -123,9 +123,15 @@ def _mutate_value(doc: Any, rng: random.Random) -> tuple[Any, str]:
     doc = copy.deepcopy(doc)
     places = _places(doc)
     path, value = rng.choice(places)
-    kind = rng.choice(["number", "number", "name", "delete", "repeat", "nest", "swap", "key"])
+    kind = rng.choice(
+        ["jitter", "jitter", "number", "number", "name", "delete", "repeat", "nest", "swap", "key"]
+    )
     numbers = [(p, v) for p, v in places if isinstance(v, int | float) and not isinstance(v, bool)]
     names = [(p, v) for p, v in places if p and p[-1] in ("name", "from", "to", "level", "type")]
+    if kind == "jitter" and numbers:  # a plausible change: most still build
+        path, old = rng.choice(numbers)
+        new = old * rng.uniform(0.5, 1.5) + rng.uniform(-0.5, 0.5)
+        return _set(doc, path, new), f"jitter {path} = {new:.3g}"
     if kind == "number" and numbers:
         path, _ = rng.choice(numbers)
         new = rng.choice(HOSTILE_NUMBERS)
