@@ -113,6 +113,9 @@ def show(
         raise ModelError(f"--port must be in 1..65535, got {port}")
     from workbench.output_files import check_output
 
+    for option, value in (("--html", html), ("--png", png)):
+        if value is not None and not str(value).strip():
+            raise ModelError(f"{option} needs a file name")
     if html:
         check_output(html, "html-snapshot", option="--html", error=ModelError)
     if png:
