@@ -28,6 +28,7 @@ import errno
 import importlib
 import importlib.util
 import os
+import re
 import signal
 import sys
 from collections.abc import Sequence
@@ -102,8 +103,21 @@ def _top_parser(commands: dict[str, str]) -> argparse.ArgumentParser:
     return parser
 
 
+#: Longest run of characters without a space an error line shows whole; a longer one (a
+#: 5,000-character name echoed back, a 300-digit number) is cut to its start and length.
+_LONGEST_WORD = 300
+
+
+def _cut_long_words(line: str) -> str:
+    return re.sub(
+        rf"\S{{{_LONGEST_WORD + 1},}}",
+        lambda word: f"{word[0][:80]}...({len(word[0]):,} characters)",
+        line,
+    )
+
+
 def _report(command: str, error: WorkbenchError) -> int:
-    print(f"workbench {command}: error: {error.one_line()}", file=sys.stderr)
+    print(f"workbench {command}: error: {_cut_long_words(error.one_line())}", file=sys.stderr)
     return error.exit_code
 
 
