@@ -6,7 +6,7 @@ garbage; names made long, empty, multi-line or numbers; keys deleted; lists repe
 thousands of times or nested deeply) and as bytes (cut, flipped, spliced with hostile
 YAML), written as YAML or JSON, and built as ``workbench world build`` does: read, checked,
 turned into SDF and written. Each mutant must give a world whose SDF is well-formed with
-finite numbers, or one :class:`~workbench.errors.WorkbenchError` line, within the hang
+finite numbers and that the simulator's world reader loads, or one :class:`~workbench.errors.WorkbenchError` line, within the hang
 bound, writing nothing outside its folder. A few mutants also go through the real command
 line.
 """
@@ -38,6 +38,7 @@ from fuzz_helpers import (
 
 from workbench.errors import WorkbenchError
 from workbench.sim.building import load_plan
+from workbench.sim.world_file import load_world
 
 REPO = Path(__file__).resolve().parents[2]
 PLANS = sorted((REPO / "mapping" / "plans").glob("*.yaml"))
@@ -229,6 +230,9 @@ def test_mutated_plans_build_a_world_or_give_one_line(tmp_path):
             except Exception as error:  # noqa: BLE001 - the failure names the mutant
                 pytest.fail(f"{what}: {type(error).__name__}: {str(error)[:300]}")
         _check_world(text, what)
+        with bounded(what, HANG_SECONDS):
+            world = load_world(folder / "out.world")  # the simulator reads it as it is
+        assert world.models, what
         built += 1
     watch.check()
     assert built and refused, (built, refused)  # the mutants reach both outcomes
