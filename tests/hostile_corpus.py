@@ -106,6 +106,37 @@ def _plugin_long_filename_world(tmp: Path) -> str:
     return _world(tmp, f'<plugin name="long" filename="{"f" * 5000}.py"/>')
 
 
+def _deep_json_plan(tmp: Path) -> str:
+    """A JSON plan whose walls are nested 100,000 lists deep (Python's decoder recurses)."""
+    path = tmp / "deep.json"
+    path.write_text('{"walls": ' + "[" * 100_000 + "]" * 100_000 + "}")
+    return str(path)
+
+
+def _plan_of_20000_walls(tmp: Path) -> str:
+    """A JSON plan of 20,000 parallel walls (a crossing check over all pairs is 2e8 pairs)."""
+    import json
+
+    walls = [{"name": f"w{i}", "start": [0, i * 0.5], "end": [3, i * 0.5]} for i in range(20_000)]
+    path = tmp / "walls.json"
+    path.write_text(json.dumps({"walls": walls}))
+    return str(path)
+
+
+def _foreign_world_file(tmp: Path) -> str:
+    """A world file the user wrote by hand, where ``world build -o`` is pointed."""
+    path = tmp / "mine.world"
+    path.write_text('<?xml version="1.0"?>\n<sdf version="1.6"><world name="mine"/></sdf>\n')
+    return str(path)
+
+
+def _plain_file(tmp: Path) -> str:
+    """A file where a folder is expected."""
+    path = tmp / "notes"
+    path.write_text("my notes\n")
+    return str(path)
+
+
 #: ``make:`` name -> function(tmp folder) -> the ``{input}`` path.
 GENERATORS: dict[str, Callable[[Path], str]] = {
     "fifo": _fifo,
@@ -118,6 +149,10 @@ GENERATORS: dict[str, Callable[[Path], str]] = {
     "include_absolute_world": _include_absolute_world,
     "plugin_long_name_world": _plugin_long_name_world,
     "plugin_long_filename_world": _plugin_long_filename_world,
+    "deep_json_plan": _deep_json_plan,
+    "plan_of_20000_walls": _plan_of_20000_walls,
+    "foreign_world_file": _foreign_world_file,
+    "plain_file": _plain_file,
 }
 
 

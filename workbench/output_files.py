@@ -49,7 +49,20 @@ KINDS: dict[str, tuple[str, Callable[[bytes], bool]]] = {
         "an SRDF written by workbench setup",
         lambda head: b"Semantic description of the robot for planning" in head,
     ),
+    "building-sdf": (
+        "an SDF file written by workbench world build",
+        lambda head: b"<sdf" in head and b"Written by 'workbench world build'" in head,
+    ),
+    "building-model-config": (
+        "a model.config written by workbench world build",
+        lambda head: b"<model" in head and b"Written by 'workbench world build'" in head,
+    ),
 }
+
+
+def _short(text: str) -> str:
+    """A path for a message: a 5,000-character one is cut to 100."""
+    return text if len(text) <= 100 else text[:97] + "..."
 
 
 def _is_dir(path: Path) -> bool:
@@ -87,11 +100,11 @@ def check_output(
     """
     path = Path(path)
     what, looks_ours = KINDS[kind]
-    label = f"{option} {path}" if option else str(path)
+    label = f"{option} {_short(str(path))}" if option else _short(str(path))
     folder = path.parent if str(path.parent) else Path(".")
     if not _is_dir(folder):
         raise _refuse(
-            f"cannot write {label}: the folder {folder} does not exist",
+            f"cannot write {label}: the folder {_short(str(folder))} does not exist",
             "create it first; workbench does not create folders",
             error,
         )

@@ -7,6 +7,7 @@ by the suite's conftest) with its own uniquely named nodes and shuts them down.
 from __future__ import annotations
 
 import json
+import math
 import uuid
 
 import pytest
@@ -82,7 +83,9 @@ def test_topic_pub_once_reaches_a_subscriber(capsys):
     [
         (lambda: topic.echo("/x", count=0), "-n must be at least 1"),
         (lambda: topic.echo("/x", timeout=-1), "--timeout must be positive"),
-        (lambda: topic.meter("hz", "/x", window=0), "--window must be at least 1"),
+        (lambda: topic.meter("hz", "/x", window=0), "--window must be 1 to 1,000,000 samples"),
+        (lambda: topic.meter("hz", "/x", duration=math.inf), "--duration must be a number of"),
+        (lambda: topic.echo("/x", timeout=1e308), "--timeout must be at most 10,000,000 s"),
         (lambda: topic.meter("rate", "/x"), "unknown meter 'rate'"),
         (lambda: topic.plot(["/x/y"], seconds=0), "--seconds must be positive"),
         (lambda: topic.pub(["/x"]), "pub needs a topic and a message type"),
@@ -164,6 +167,8 @@ def test_tf_echo_prints_a_static_transform(capsys):
         (lambda: tf.frames(duration=-1), "--duration must not be negative"),
         (lambda: tf.view(scale=0), "--scale and --rate must be positive"),
         (lambda: tf.view(duration=0), "--duration must be positive"),
+        (lambda: tf.view(rate=1e9), "--rate must be a rate from 0.001 to 10,000 Hz"),
+        (lambda: tf.frames(duration=math.nan), "--duration must not be negative"),
     ],
 )
 def test_tf_rejects_bad_numbers(call, message):
@@ -174,17 +179,21 @@ def test_tf_rejects_bad_numbers(call, message):
 @pytest.mark.parametrize(
     ("options", "message"),
     [
-        ({"samples": -1}, "--samples must be >= 0"),
-        ({"seed": -2}, "--seed must not be negative"),
+        ({"samples": -1}, "--samples must be 0 to 1,000,000"),
+        ({"samples": 10**20}, "--samples must be 0 to 1,000,000"),
+        ({"seed": -2}, r"--seed must be 0 to 2\^32 - 1"),
         ({"velocity_scaling": 1.5}, r"--velocity-scaling must be in \(0, 1\]"),
-        ({"edge_resolution": 0}, "--edge-resolution must be positive"),
+        ({"edge_resolution": 0}, "--edge-resolution must be above 0 and at most pi"),
+        ({"edge_resolution": math.inf}, "--edge-resolution must be above 0 and at most pi"),
+        ({"group": "g" * 5000}, "--group 'ggg.*' has 5,000 characters; at most 256"),
+        ({"output": ""}, "-o needs the folder"),
         ({"controller": "pd"}, "unknown controller 'pd'"),
         ({"planner": "RRTfoo"}, "unknown planner 'RRTfoo'"),
     ],
 )
 def test_setup_checks_its_options_before_sampling(tmp_path, options, message):
     with pytest.raises(PlanningError, match=message):
-        setup.setup("robot_arm", output=str(tmp_path / "cfg"), **options)
+        setup.setup("robot_arm", **{"output": str(tmp_path / "cfg"), **options})
     assert not (tmp_path / "cfg").exists()
 
 

@@ -35,7 +35,7 @@ def test_msg_and_srv_commands(capsys):
         (("srv", "list", "no_such_pkg"), "no service types in package 'no_such_pkg'"),
         (("bag", "record", "-a", "-j", "--lz4"), "choose one compression"),
         (("bag", "record", "-a", "--duration", "0"), "--duration must be positive"),
-        (("bag", "play", "x.bag", "-r", "0"), "--rate must be positive"),
+        (("bag", "play", "x.bag", "-r", "0"), "--rate must be a speed factor"),
     ],
 )
 def test_bad_input_in_process_is_one_line(capsys, monkeypatch, tmp_path, args, message):

@@ -74,7 +74,7 @@ BAD_PLANS = [
     ("walls: []", "the plan has no walls"),
     ("image: map.pgm\nresolution: 0.05", "this is a map_server map, not a building plan"),
     ("- just a list", "the plan must be a mapping of keys to values, got list"),
-    ("walls: [{start: [0, 0", "not YAML"),
+    ("walls: [{start: [0, 0", "plan file is not valid YAML"),
     (
         _walls("{name: w, start: [0, 0], end: [3, 0]}")
         + "stairs: [{from: ground, to: attic, start: [0, 0], length: 2}]",
@@ -144,6 +144,7 @@ def test_the_cli_builds_a_world_and_lists_the_shipped_ones(run_cli, repo_root, t
     assert result.returncode == 0, result.stderr
     assert "building 'lab_room': 1 level, 4 walls, 1 door" in result.stdout
     assert f"wrote {out}" in result.stdout and out.is_file()
+    (tmp_path / "models").mkdir()
     folder = tmp_path / "models" / "lab_room"
     result = run_cli(
         "world", "build", repo_root / "mapping" / "demo_rooms.yaml", "-o", folder, "--model"
@@ -198,3 +199,69 @@ def test_the_cli_reports_bad_input_in_one_line(run_cli, tmp_path, plan, extra, m
     assert lines[0].startswith(f"workbench world: error: {path}")
     assert message in lines[0]
     assert not (tmp_path / "out.world").exists()
+
+
+def _first_meeting_pair(walls):
+    """The first pair (in order) that crosses or overlaps, checked one pair at a time."""
+    from itertools import combinations
+
+    from workbench.sim.building.checks import _segments_meet
+
+    for a, b in combinations(range(len(walls)), 2):
+        if _segments_meet(walls[a], walls[b]) is not None:
+            return a, b
+    return None
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_the_fast_crossing_check_finds_the_same_first_pair_as_checking_each_pair(seed):
+    from workbench.sim.building import Wall
+    from workbench.sim.building.checks import _candidate_pairs, _segments_meet
+
+    rng = np.random.default_rng(seed)
+    # end points on a coarse grid: walls that touch at ends, T-junctions, collinear
+    # overlaps and parallel neighbours are all common, as in drawn plans
+    points = rng.integers(0, 6, size=(60, 4)).astype(float) * 0.5
+    walls = [
+        Wall(name=f"w{i}", start=(p[0], p[1]), end=(p[2], p[3]))
+        for i, p in enumerate(points)
+        if (p[0], p[1]) != (p[2], p[3])
+    ]
+    for count in range(2, len(walls) + 1):  # every prefix: the first problem moves
+        subset = walls[:count]
+        fast = next(
+            ((i, j) for i, j in _candidate_pairs(subset) if _segments_meet(subset[i], subset[j])),
+            None,
+        )
+        assert fast == _first_meeting_pair(subset), count
+
+
+def test_plans_past_their_bounds_are_refused_in_seconds(tmp_path):
+    import json
+
+    walls = [{"name": f"w{i}", "start": [0, i * 0.5], "end": [3, i * 0.5]} for i in range(5001)]
+    path = tmp_path / "walls.json"
+    path.write_text(json.dumps({"walls": walls}))
+    with pytest.raises(PlanError, match="more than 5,000 walls"):
+        load_plan(path)
+    chain = {"walls": [{"name": "c", "points": [[i, i % 2] for i in range(5002)]}]}
+    path.write_text(json.dumps(chain))
+    with pytest.raises(PlanError, match="more than 5,000 walls"):
+        load_plan(path)
+    doors = [{"name": f"d{i}", "at": 0.5 + i, "width": 0.5} for i in range(2000)]
+    path.write_text(
+        json.dumps(
+            {
+                "walls": [
+                    {
+                        "name": "w",
+                        "start": [0, 0],
+                        "end": [3000, 0],
+                        "doors": doors + [{"name": "late", "at": 0.6}],
+                    }
+                ]
+            }
+        )
+    )
+    with pytest.raises(PlanError, match="door 'late' overlaps door 'd0'"):
+        load_plan(path)

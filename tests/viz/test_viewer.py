@@ -139,3 +139,11 @@ def test_the_tf_display_frames_every_frame_it_draws(viewer):
     # far enough back to see the whole 8 m x 5.5 m spread
     assert np.linalg.norm(eye - target) > 8.0
     display.clear()
+
+
+@pytest.mark.parametrize("port", [-1, 80, 65536, 10**20])
+def test_a_port_drake_would_abort_on_is_refused_first(port):
+    from workbench.errors import ViewerError
+
+    with pytest.raises(ViewerError, match=r"--port must be 0 \(any free port\) or 1024..65535"):
+        Viewer(port=port)

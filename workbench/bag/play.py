@@ -7,6 +7,7 @@ can drive it with a fake clock.
 
 from __future__ import annotations
 
+import math
 import os
 import time
 from collections.abc import Callable, Iterable
@@ -71,6 +72,8 @@ def play(
     """
     if not rate > 0:
         raise BagError(f"rate must be positive, got {rate}", hint="use -r 0.5 for half speed")
+    if not (0 <= start <= 2**32 and 0 <= delay < math.inf):  # NaN fails every comparison
+        raise BagError(f"start and delay must be finite seconds >= 0, got {start:g} and {delay:g}")
     summary = summarize(path)
     first_ns = summary.start_ns
     last_ns = summary.end_ns

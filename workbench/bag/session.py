@@ -96,6 +96,8 @@ def record(
         raise BagError("nothing to record", hint="give topic names or -a for all topics")
     if duration is not None and not duration > 0:
         raise BagError(f"--duration must be positive, got {duration:g}")
+    if duration is not None and not duration <= MAX_RECORD_SECONDS:
+        raise BagError(f"--duration must be at most {MAX_RECORD_SECONDS:,.0f} s, got {duration:g}")
     if limit is not None and limit < 1:
         raise BagError(f"--limit must be at least 1, got {limit}")
     path = output_path(output_name, output_prefix)
@@ -163,6 +165,32 @@ def _drain(node: Any) -> None:
             break
 
 
+#: Longest ``bag record --duration``, s (about 116 days; ``inf`` would never stop).
+MAX_RECORD_SECONDS = 10_000_000.0
+#: Bounds of ``bag play``'s options: a rate of 1e-300 would wait forever between two
+#: messages, a start of 1e308 s overflows a ROS time (at most 2^32 s).
+MIN_RATE, MAX_RATE = 1e-3, 1e6
+MAX_DELAY = 86_400.0
+MAX_START = float(2**32)
+
+
+def check_play_options(rate: float, delay: float, start: float) -> None:
+    """Refuse ``-r``, ``-d`` and ``-s`` values that are not finite or out of their bounds.
+
+    Raises:
+        BagError: The first bad value, naming the option and its bound.
+    """
+    if not MIN_RATE <= rate <= MAX_RATE:  # NaN fails every comparison
+        raise BagError(
+            f"--rate must be a speed factor from {MIN_RATE:g} to {MAX_RATE:g}, got {rate:g}",
+            hint="use -r 0.5 for half speed",
+        )
+    if not 0 <= delay <= MAX_DELAY:
+        raise BagError(f"--delay must be 0 to {MAX_DELAY:,.0f} seconds, got {delay:g}")
+    if not 0 <= start <= MAX_START:
+        raise BagError(f"--start must be 0 to {MAX_START:,.0f} seconds into the bag, got {start:g}")
+
+
 def play(
     bag: str,
     *,
@@ -196,13 +224,23 @@ def play(
     from workbench.bus import Node
     from workbench.msgs import get_type
 
-    if not rate > 0:
-        raise BagError(f"--rate must be positive, got {rate:g}")
-    if delay < 0 or start < 0:
-        raise BagError("--delay and --start must not be negative")
+    check_play_options(rate, delay, start)
     renamed = _remaps(list(remaps))
     summary = summarize(bag)  # its damage is reported once, as the playback reads it
     playable = _playable(summary, topics)
+    if not playable and summary.connections:
+        recorded = sorted({conn.topic for conn in summary.connections.values()})
+        shown = ", ".join(recorded[:10]) + (" ..." if len(recorded) > 10 else "")
+        raise BagError(
+            "nothing to play: "
+            + (
+                "no topic given with --topics is in the bag"
+                if topics
+                else "workbench knows none of the bag's message types"
+            ),
+            path=bag,
+            hint=f"the bag's topics: {shown}",
+        )
     node = Node("play", anonymous=True)
     publishers: dict[str, Any] = {}
     for conn in summary.connections.values():

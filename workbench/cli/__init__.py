@@ -24,9 +24,11 @@ also in a background job, and it exits with 130 or 143 (see
 from __future__ import annotations
 
 import argparse
+import errno
 import importlib
 import importlib.util
 import os
+import re
 import signal
 import sys
 from collections.abc import Sequence
@@ -101,8 +103,21 @@ def _top_parser(commands: dict[str, str]) -> argparse.ArgumentParser:
     return parser
 
 
+#: Longest run of characters without a space an error line shows whole; a longer one (a
+#: 5,000-character name echoed back, a 300-digit number) is cut to its start and length.
+_LONGEST_WORD = 300
+
+
+def _cut_long_words(line: str) -> str:
+    return re.sub(
+        rf"\S{{{_LONGEST_WORD + 1},}}",
+        lambda word: f"{word[0][:80]}...({len(word[0]):,} characters)",
+        line,
+    )
+
+
 def _report(command: str, error: WorkbenchError) -> int:
-    print(f"workbench {command}: error: {error.one_line()}", file=sys.stderr)
+    print(f"workbench {command}: error: {_cut_long_words(error.one_line())}", file=sys.stderr)
     return error.exit_code
 
 
@@ -201,3 +216,18 @@ def _dispatch(args: list[str], debug: bool = False) -> int:
         # `workbench topic echo ... | head` closes stdout early: not an error.
         sys.stderr.close()
         return 0
+    except OSError as error:
+        # A name the file system refuses outright (a 5,000-character argument looked up as
+        # a file): bad input wherever it is first touched, not a bug.
+        if error.errno != errno.ENAMETOOLONG or debug:
+            raise
+        return _report(command, _name_too_long(error))
+
+
+def _name_too_long(error: OSError) -> WorkbenchError:
+    name = os.fsdecode(error.filename) if error.filename is not None else ""
+    shown = name if len(name) <= 60 else name[:57] + "..."
+    return WorkbenchError(
+        f"the file name '{shown}' ({len(name):,} characters) is too long for the file system",
+        hint="a file name has at most 255 characters per folder and 4,096 in all",
+    )

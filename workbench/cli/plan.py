@@ -317,11 +317,14 @@ def _load_or_setup(robot: str, config_dir: str | None):
     A folder given with ``--config`` is read, never written: the setup assistant
     writes where ``workbench setup -o DIR`` is told to.
     """
+    from workbench.errors import PlanningError
     from workbench.model.sources import resolve_robot_path
     from workbench.planning.config import ConfigNotFoundError, load_config
     from workbench.planning.config import config_dir as default_dir
     from workbench.planning.setup import run_setup
 
+    if config_dir is not None and not str(config_dir).strip():
+        raise PlanningError("--config needs the folder of a planning configuration")
     if config_dir:
         target = Path(config_dir)
         try:

@@ -7,8 +7,13 @@ prints the twelve steps it performed.
 from __future__ import annotations
 
 import argparse
+import math
 
 from workbench.errors import PlanningError
+
+#: Most collision-matrix samples (--samples) and the largest --seed.
+MAX_SAMPLES = 1_000_000
+MAX_SEED = 2**32 - 1
 
 CONTROLLERS = ("inverse_dynamics", "pid")
 
@@ -132,22 +137,31 @@ def setup(
     Raises:
         PlanningError: A bad option, an unknown robot or planner, or a setup step failed.
     """
+    from workbench.model.limits import name_problem, shown_name
     from workbench.model.sources import resolve_robot_path
     from workbench.planning.ompl_planner import planner_name
     from workbench.planning.setup import run_setup
 
-    if samples < 0:
-        raise PlanningError(f"--samples must be >= 0, got {samples}")
-    if seed < 0:
-        raise PlanningError(f"--seed must not be negative, got {seed}")
+    if not 0 <= samples <= MAX_SAMPLES:
+        raise PlanningError(f"--samples must be 0 to {MAX_SAMPLES:,}, got {samples}")
+    if not 0 <= seed <= MAX_SEED:
+        raise PlanningError(f"--seed must be 0 to 2^32 - 1, got {seed}")
+    for option, name in (("--group", group), ("--hand", hand)):
+        problem = name_problem(name)
+        if problem is not None:
+            raise PlanningError(f"{option} '{shown_name(name)}' {problem}")
+    if output is not None and not output.strip():
+        raise PlanningError("-o needs the folder to write the configuration into")
     for name, value in (
         ("velocity-scaling", velocity_scaling),
         ("acceleration-scaling", acceleration_scaling),
     ):
         if not 0 < value <= 1:
             raise PlanningError(f"--{name} must be in (0, 1], got {value}")
-    if not edge_resolution > 0:
-        raise PlanningError(f"--edge-resolution must be positive, got {edge_resolution}")
+    if not 0 < edge_resolution <= math.pi:
+        raise PlanningError(
+            f"--edge-resolution must be above 0 and at most pi rad, got {edge_resolution}"
+        )
     if controller not in CONTROLLERS:
         raise PlanningError(
             f"unknown controller '{controller}'", hint=f"use one of {', '.join(CONTROLLERS)}"

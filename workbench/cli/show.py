@@ -6,6 +6,9 @@ import argparse
 import sys
 import threading
 
+#: Largest --width or --height of a PNG, pixels.
+MAX_PIXELS = 16_384
+
 
 def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("file", help="a .urdf, .sdf or .xacro file, or a name from urdf/")
@@ -102,10 +105,17 @@ def show(
 
     if width < 1 or height < 1:
         raise ModelError(f"--width and --height must be positive, got {width} x {height}")
+    if width > MAX_PIXELS or height > MAX_PIXELS:
+        raise ModelError(
+            f"--width and --height must be at most {MAX_PIXELS:,} pixels, got {width} x {height}"
+        )
     if port is not None and not 0 < port < 65536:
         raise ModelError(f"--port must be in 1..65535, got {port}")
     from workbench.output_files import check_output
 
+    for option, value in (("--html", html), ("--png", png)):
+        if value is not None and not str(value).strip():
+            raise ModelError(f"{option} needs a file name")
     if html:
         check_output(html, "html-snapshot", option="--html", error=ModelError)
     if png:

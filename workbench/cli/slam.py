@@ -9,6 +9,10 @@ from pathlib import Path
 
 from workbench.errors import MappingError
 
+#: Largest --resolution (cell size) and --max-range, m.
+MAX_RESOLUTION = 10.0
+MAX_RANGE = 1000.0
+
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Add the command's arguments."""
@@ -113,6 +117,14 @@ def slam(
         raise MappingError(f"--resolution must be a positive number of metres, got {resolution}")
     if not (max_range > 0 and np.isfinite(max_range)):
         raise MappingError(f"--max-range must be a positive number of metres, got {max_range}")
+    if resolution > MAX_RESOLUTION or max_range > MAX_RANGE:
+        raise MappingError(
+            f"--resolution must be at most {MAX_RESOLUTION:g} m and --max-range at most "
+            f"{MAX_RANGE:g} m, got {resolution:g} and {max_range:g}",
+            hint="a lab map has cells of a few centimetres and a laser of tens of metres",
+        )
+    if not out.strip():
+        raise MappingError("--out needs a name for the map (DIR/NAME without extension)")
     target = Path(out)
     if target.suffix in (".yaml", ".pgm", ".png"):
         target = target.with_suffix("")
@@ -122,6 +134,7 @@ def slam(
             path=target.parent,
             hint="create it or change --out",
         )
+    _check_outputs(target, png)
 
     started = time.perf_counter()
     cpu_started = time.process_time()
@@ -166,3 +179,32 @@ def slam(
     print(f"wrote {yaml_path}, {pgm}, {picture}, {csv}")
     print(f"took {wall:.1f} s wall, {cpu:.1f} s CPU{speed}")
     return 0
+
+
+def _check_outputs(target: Path, png: str | None) -> None:
+    """Check, before the SLAM runs, that the map, picture and trajectory can be written.
+
+    Raises:
+        MappingError: A name the file system refuses, a pipe, device or directory, or a
+            picture or trajectory file workbench did not write.
+    """
+    import contextlib
+    import os
+
+    from workbench.output_files import check_output
+
+    for path in (target.with_name(target.name + ".pgm"), target.with_name(target.name + ".yaml")):
+        shown = str(path) if len(str(path)) <= 100 else str(path)[:97] + "..."
+        try:
+            exists = path.exists()
+            if exists and not path.is_file():
+                raise MappingError(f"cannot write {shown}: it is not a regular file")
+            if not exists:
+                os.close(os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600))
+                with contextlib.suppress(OSError):
+                    os.unlink(path)
+        except OSError as error:
+            raise MappingError(f"cannot write {shown}: {error.strerror}") from None
+    picture = Path(png) if png else target.with_name(target.name + ".png")
+    check_output(picture, "png", error=MappingError)
+    check_output(target.with_name(target.name + ".csv"), "trajectory-csv", error=MappingError)

@@ -4,6 +4,9 @@ from __future__ import annotations
 
 import argparse
 
+#: Largest speed a keyboard teleop option takes (m/s or rad/s).
+MAX_SPEED = 100.0
+
 
 def configure(parser: argparse.ArgumentParser) -> None:
     kinds = parser.add_subparsers(dest="kind", metavar="KIND", required=True)
@@ -67,8 +70,16 @@ def twist(*, topic: str = "cmd_vel", speed: float | None = None, turn: float | N
 
 def _drive(name: str, loop, topic: str, params: dict[str, float | None], *, raw: bool) -> int:
     from workbench.bus import Node
+    from workbench.errors import WorkbenchError
     from workbench.teleop.terminal import RawTerminal
 
+    for key, value in params.items():
+        if value is not None and not abs(value) <= MAX_SPEED:  # NaN fails the comparison
+            option = "--" + key.replace("_", "-")
+            raise WorkbenchError(
+                f"{option} must be a finite speed within ±{MAX_SPEED:g}, got {value:g}",
+                hint="m/s for linear speeds, rad/s for turning",
+            )
     terminal = RawTerminal(raw=raw)  # fails early, before joining the bus, without a terminal
     node = Node(name)
     for key, value in params.items():

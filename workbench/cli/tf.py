@@ -7,7 +7,14 @@ import argparse
 import math
 import sys
 import time
+from pathlib import Path
 from typing import Any
+
+from workbench.cli.values import check_rate, check_seconds
+from workbench.errors import WorkbenchError
+
+#: Longest axis ``tf view --scale`` draws, m.
+MAX_SCALE = 1000.0
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -131,6 +138,8 @@ def echo(
         raise TransformError(f"--count must be at least 1, got {count}")
     if timeout is not None and not timeout > 0:
         raise TransformError(f"--timeout must be positive, got {timeout}")
+    check_rate(rate, "--rate", TransformError)
+    check_seconds(timeout, "--timeout", TransformError)
     node, buffer, _ = _listener()
     period = 1.0 / rate
     started = time.monotonic()
@@ -181,6 +190,8 @@ def frames(*, duration: float = 5.0, out: str = "frames.pdf", yaml: bool = False
 
     if not duration >= 0:
         raise TransformError(f"--duration must not be negative, got {duration}")
+    check_seconds(duration, "--duration", TransformError, zero=True)
+    check_frames_output(out, TransformError)
     node, buffer, _ = _listener()
     try:
         print(f"Listening to tf data during {duration:g} seconds...", file=sys.stderr)
@@ -230,6 +241,10 @@ def view(
         raise TransformError(f"--scale and --rate must be positive, got {scale}, {rate}")
     if duration is not None and not duration > 0:
         raise TransformError(f"--duration must be positive, got {duration}")
+    check_rate(rate, "--rate", TransformError)
+    check_seconds(duration, "--duration", TransformError)
+    if not scale <= MAX_SCALE:
+        raise TransformError(f"--scale must be at most {MAX_SCALE:g}, got {scale:g}")
     from workbench.viz import Viewer
     from workbench.viz.frames import TfDisplay
 
@@ -295,3 +310,25 @@ def static(values: list[str], *, once: bool = False) -> int:
     finally:
         node.shutdown()
     return 0
+
+
+#: The output kind of each file name ``tf frames`` writes (see :mod:`workbench.output_files`).
+_FRAME_KINDS = {"png": "png", "pdf": "pdf", "svg": "svg", "gv": "graphviz", "dot": "graphviz"}
+
+
+def check_frames_output(out: str, error: type[WorkbenchError]) -> None:
+    """Check, before listening, that the frame tree may be written to ``out``.
+
+    Raises:
+        error: An unknown extension, a missing folder, a pipe or device, or someone
+            else's file.
+    """
+    from workbench.output_files import check_output
+
+    kind = _FRAME_KINDS.get(Path(out).suffix.lower().lstrip("."))
+    if kind is None:
+        raise error(
+            f"cannot write the frame tree as '{Path(out).name[:60]}'",
+            hint="use a .png, .pdf, .svg or .gv file name",
+        )
+    check_output(out, kind, error=error)

@@ -11,6 +11,8 @@ from collections.abc import Callable, Iterator
 from typing import Any
 
 PUB_USAGE = "workbench topic pub [-1 | -r RATE | -l] TOPIC TYPE [--] [ARGS ...]"
+#: Most samples ``topic hz -w`` / ``topic bw -w`` keep.
+MAX_WINDOW = 1_000_000
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -109,10 +111,12 @@ def _cli_node() -> Iterator[Any]:
 
 
 def _positive(value: float | None, option: str) -> None:
+    from workbench.cli.values import check_seconds
     from workbench.errors import BusError
 
     if value is not None and not value > 0:
         raise BusError(f"{option} must be positive, got {value:g}")
+    check_seconds(value, option, BusError)
 
 
 def topic_list(
@@ -175,6 +179,8 @@ def echo(
         raise BusError(f"-n must be at least 1, got {count}")
     if width is not None and width < 2:
         raise BusError("Fixed width for numeric values must be at least 2")
+    if bag is not None and not bag.strip():
+        raise BusError("-b needs the name of a bag file")
     if all_topics and not bag:
         raise BusError("Display all option is only valid when echoing from bag files")
     if not topic and not all_topics:
@@ -208,8 +214,8 @@ def meter(
 
     if kind not in ("hz", "bw"):
         raise BusError(f"unknown meter '{kind}'", hint="use hz or bw")
-    if window is not None and window < 1:
-        raise BusError(f"--window must be at least 1, got {window}")
+    if window is not None and not 1 <= window <= MAX_WINDOW:
+        raise BusError(f"--window must be 1 to {MAX_WINDOW:,} samples, got {window}")
     _positive(duration, "--duration")
     with _cli_node() as node:
         return _meter(node, kind, topic, window, duration)
@@ -522,6 +528,7 @@ def parse_pub_words(words: list[str]) -> dict[str, Any]:
     Raises:
         BusError: missing topic/type or a bad option value.
     """
+    from workbench.cli.values import check_rate
     from workbench.errors import BusError
 
     options: dict[str, Any] = {"once": False, "rate": None, "latch": False, "positional": []}
@@ -546,15 +553,20 @@ def parse_pub_words(words: list[str]) -> dict[str, Any]:
             try:
                 options["rate"] = float(value)
             except ValueError:
-                raise BusError(f"-r needs a rate in Hz, got {value!r}", hint=PUB_USAGE) from None
+                raise BusError(
+                    f"-r needs a rate in Hz, got {_short(value)!r}", hint=PUB_USAGE
+                ) from None
             if not options["rate"] > 0:
-                raise BusError(f"-r needs a positive rate, got {value}", hint=PUB_USAGE)
+                raise BusError(f"-r needs a positive rate, got {_short(value)}", hint=PUB_USAGE)
+            check_rate(options["rate"], "-r", BusError)
         elif word.startswith("-") and not _is_number(word) and len(options["positional"]) < 2:
             raise BusError(f"unknown option {word}", hint=PUB_USAGE)
         else:
             options["positional"].append(word)
         i += 1
     positional = options.pop("positional") + rest
+    if options["rate"] is not None and options["once"]:
+        raise BusError("-r and -1 cannot go together", hint=PUB_USAGE)
     if len(positional) < 2:
         raise BusError("pub needs a topic and a message type", hint=PUB_USAGE)
     options["topic"], options["type"], options["args"] = (
@@ -563,6 +575,10 @@ def parse_pub_words(words: list[str]) -> dict[str, Any]:
         positional[2:],
     )
     return options
+
+
+def _short(text: str) -> str:
+    return text if len(text) <= 40 else text[:37] + "..."
 
 
 def _is_number(word: str) -> bool:

@@ -41,11 +41,15 @@ def turtlesim(
         ros_args: ``from:=to`` remappings and ``_param:=value`` settings.
 
     Raises:
-        TurtleError: A port outside 0..65535.
+        TurtleError: A port outside 0..65535, or a --png that cannot be written.
     """
     from workbench.turtlesim.node import TurtleError, run_node
 
     if not 0 <= port < 65536:
         raise TurtleError(f"--port must be in 0..65535, got {port}")
+    if png is not None:
+        from workbench.output_files import check_output
+
+        check_output(png, "png", option="--png", error=TurtleError)
     options = SimpleNamespace(png=png, view=view, port=port, seed=seed)
     return run_node(options, list(ros_args))

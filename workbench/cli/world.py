@@ -95,11 +95,13 @@ def build(
     Raises:
         PlanError: The plan cannot be read or is wrong, or the output cannot be written.
     """
+    from workbench.limits import check_regular_file
     from workbench.sim.building import PlanError, load_plan, plan_from_image
+    from workbench.sim.building.sdf import check_building_output
 
     source = Path(plan)
-    if not source.is_file():
-        raise PlanError("plan file not found", path=source)
+    check_regular_file(source, "plan file", PlanError)
+    check_building_output(output, "model" if model else "world")
     if source.suffix.lower() in PLAN_SUFFIXES and not _is_map_yaml(source):
         building = load_plan(source)
         if name:
@@ -148,11 +150,12 @@ def _is_map_yaml(path: Path) -> bool:
     """A map_server map YAML (``image:`` and ``resolution:``), not a plan."""
     if path.suffix.lower() not in (".yaml", ".yml"):
         return False
-    import yaml
+    from workbench.errors import WorkbenchError
+    from workbench.limits import load_yaml_file
 
     try:
-        doc = yaml.safe_load(path.read_text())
-    except (OSError, UnicodeDecodeError, yaml.YAMLError):
+        doc = load_yaml_file(path, "plan file")
+    except WorkbenchError:
         return False  # load_plan says what is wrong
     return isinstance(doc, dict) and "image" in doc and "resolution" in doc
 

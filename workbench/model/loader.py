@@ -121,6 +121,8 @@ def _drake_error(
     if match:
         line_number, message = int(match.group(1)), match.group(2)
     message = message.removeprefix("error: ")
+    # A mesh parser's "last read: '...'" quotes the mesh file, which may be anyone's file
+    message = re.sub(r";? ?last read: .*$", "", message)
     if line_number is None:
         # A mesh Drake cannot read: name the link that uses it, not the model.
         line_number = _mesh_line(message, description)

@@ -44,6 +44,16 @@ class PositionGoal:
 
 Goal = NamedGoal | JointGoal | RandomGoal | PositionGoal
 
+#: Farthest an ``xyz=`` goal may be from the world origin, m (an arm reaches a few metres;
+#: beyond this, inverse kinematics would only search in vain).
+MAX_GOAL_DISTANCE = 1000.0
+#: Longest goal text a message quotes in full.
+_SHOWN = 60
+
+
+def _shown(text: str) -> str:
+    return text if len(text) <= _SHOWN else text[: _SHOWN - 3] + "..."
+
 
 def _numbers(text: str, what: str, count: int | None = None) -> tuple[float, ...]:
     parts = [p for p in text.replace(" ", "").split(",") if p != ""]
@@ -51,12 +61,13 @@ def _numbers(text: str, what: str, count: int | None = None) -> tuple[float, ...
         values = tuple(float(p) for p in parts)
     except ValueError:
         raise GoalError(
-            f"{what} must be comma-separated numbers, got '{text}'", hint="e.g. q=0,0.5,-0.3"
+            f"{what} must be comma-separated numbers, got '{_shown(text)}'",
+            hint="e.g. q=0,0.5,-0.3",
         ) from None
     if not values or not all(math.isfinite(v) for v in values):
-        raise GoalError(f"{what} needs finite numbers, got '{text}'")
+        raise GoalError(f"{what} needs finite numbers, got '{_shown(text)}'")
     if count is not None and len(values) != count:
-        raise GoalError(f"{what} needs {count} numbers, got {len(values)} ('{text}')")
+        raise GoalError(f"{what} needs {count} numbers, got {len(values)} ('{_shown(text)}')")
     return values
 
 
@@ -80,10 +91,17 @@ def parse_goal(text: str) -> Goal:
             body, rpy_text = body.split(",rpy=", 1)
             rpy = _numbers(rpy_text, "rpy", 3)
         xyz = _numbers(body, "xyz", 3)
+        if max(abs(v) for v in xyz) > MAX_GOAL_DISTANCE:
+            raise GoalError(
+                f"xyz must be within {MAX_GOAL_DISTANCE:,.0f} m of the world origin on each axis, "
+                f"got '{_shown(body)}'",
+                hint="give the point in metres, within the robot's reach",
+            )
         return PositionGoal(xyz, rpy)  # type: ignore[arg-type]
     if "=" in text or "," in text:
         raise GoalError(
-            f"cannot read goal '{text}'", hint="use a named state, random, q=J1,J2,... or xyz=X,Y,Z"
+            f"cannot read goal '{_shown(text)}'",
+            hint="use a named state, random, q=J1,J2,... or xyz=X,Y,Z",
         )
     return NamedGoal(text)
 
@@ -196,7 +214,7 @@ def check_goal(goal: Goal | str, outline: GroupOutline, what: str = "goal") -> G
     if isinstance(goal, NamedGoal) and goal.name not in outline.state_names:
         known = ", ".join(outline.state_names) or "none"
         raise GoalError(
-            f"{what}: group '{outline.group}' has no named state '{goal.name}'",
+            f"{what}: group '{outline.group}' has no named state '{_shown(goal.name)}'",
             hint=f"known states: {known}; or use random, q=J1,J2,... or xyz=X,Y,Z",
         )
     if isinstance(goal, JointGoal):

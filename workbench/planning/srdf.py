@@ -174,7 +174,7 @@ class Srdf:
             if group.name == name:
                 return group
         raise SrdfError(
-            f"unknown planning group '{name}'",
+            f"unknown planning group '{name if len(name) <= 60 else name[:57] + '...'}'",
             path=self.path,
             hint=_choices("groups", name, self.group_names),
         )

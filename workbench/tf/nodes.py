@@ -63,6 +63,12 @@ def run_lab_script(node_type: str, argv: Sequence[str]) -> int:
     return 0
 
 
+#: Largest translation static_transform_publisher takes, m (past any Earth coordinate).
+MAX_STATIC_TRANSLATION = 1e9
+#: Longest frame id it takes (as long as a graph name).
+MAX_FRAME_LENGTH = 512
+
+
 def parse_static_args(args: Sequence[str]) -> tuple[str, str, tuple[float, ...], tuple[float, ...]]:
     """``(frame_id, child, translation, quaternion)`` from static_transform_publisher's arguments."""
     from workbench.tf.transformations import quaternion_from_euler
@@ -84,6 +90,13 @@ def parse_static_args(args: Sequence[str]) -> tuple[str, str, tuple[float, ...],
             raise ValueError(f"{len(values)} arguments")
         if not all(math.isfinite(v) for v in (x, y, z, *q)):
             raise ValueError("every number must be finite (no nan or inf)")
+        if not all(abs(v) <= MAX_STATIC_TRANSLATION for v in (x, y, z)):
+            raise ValueError(f"x, y and z must be within {MAX_STATIC_TRANSLATION:g} m")
+        for frame in values[-2:]:
+            if not frame.strip() or len(frame) > MAX_FRAME_LENGTH:
+                raise ValueError(
+                    f"a frame id has 1 to {MAX_FRAME_LENGTH} characters, got {len(frame):,}"
+                )
     except ValueError as error:
         raise InvalidArgumentException(
             f"static_transform_publisher: bad arguments ({error})",

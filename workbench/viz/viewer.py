@@ -38,6 +38,12 @@ class Viewer:
 
     def __init__(self, meshcat: Any = None, port: int | None = None) -> None:
         if meshcat is None:
+            # Drake aborts on a port below 1024 (but 0) and raises a TypeError past 2^31
+            if port is not None and not (port == 0 or 1024 <= port <= 65535):
+                raise ViewerError(
+                    f"--port must be 0 (any free port) or 1024..65535, got {port}",
+                    hint="ports below 1024 are the system's",
+                )
             from pydrake.geometry import Meshcat, MeshcatParams
 
             try:

@@ -19,7 +19,8 @@ sys.path.insert(0, str(HERE.parents[1]))  # tests/, for hostile_corpus
 
 from hostile_corpus import cases, run_case  # noqa: E402
 
-KINDS = ("parameters", "launch", "bags", "logs", "maps", "plugins")
+#: Every kind: each folder here with a cases.yaml.
+KINDS = tuple(sorted(path.parent.name for path in HERE.glob("*/cases.yaml")))
 
 HEADER = """\
 # Hostile {kind}: each case's command and what it must print (format: tests/hostile_corpus.py).

@@ -101,12 +101,10 @@ def floor_pieces(plan: BuildingPlan, level: Level) -> list[Piece]:
         }
     )
     solid = np.ones((len(ys) - 1, len(xs) - 1), dtype=bool)
+    cx = ((np.asarray(xs[:-1]) + np.asarray(xs[1:])) / 2)[None, :]
+    cy = ((np.asarray(ys[:-1]) + np.asarray(ys[1:])) / 2)[:, None]
     for (hx0, hy0), (hx1, hy1) in holes:
-        for row in range(len(ys) - 1):
-            for col in range(len(xs) - 1):
-                cx, cy = (xs[col] + xs[col + 1]) / 2, (ys[row] + ys[row + 1]) / 2
-                if hx0 < cx < hx1 and hy0 < cy < hy1:
-                    solid[row, col] = False
+        solid &= ~((hx0 < cx) & (cx < hx1) & (hy0 < cy) & (cy < hy1))
     group = f"floor_{level.name}"
     pieces: list[Piece] = []
     for r0, r1, c0, c1 in rectangles(solid):

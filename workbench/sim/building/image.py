@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
+from workbench.sim.building.limits import MAX_PLAN_NUMBER
 from workbench.sim.building.plan import (
     DEFAULT_HEIGHT,
     WALL_COLOUR,
@@ -112,6 +113,11 @@ def plan_from_image(
             hint="drop specks with --min-pixels, or use a cleaner or coarser image",
         )
     ox, oy = origin if origin is not None else (0.0, 0.0)
+    if not all(math.isfinite(v) and abs(v) <= MAX_PLAN_NUMBER for v in (ox, oy)):
+        raise PlanError(
+            f"the origin must be within {MAX_PLAN_NUMBER:,.0f} m, got ({ox:g}, {oy:g})",
+            path=file,
+        )
     rows = walls_mask.shape[0]
     level = Level(name="ground")
     for index, (r0, r1, c0, c1) in enumerate(boxes):
@@ -183,8 +189,12 @@ def _despeckle(walls: np.ndarray, min_pixels: int) -> np.ndarray:
 
 
 def _check_option(file: Path, what: str, value: float, unit: str) -> None:
-    if not (math.isfinite(value) and value > 0):
-        raise PlanError(f"{what} must be a positive number ({unit}), got {value:g}", path=file)
+    if not (math.isfinite(value) and 0 < value <= MAX_PLAN_NUMBER):
+        raise PlanError(
+            f"{what} must be a positive number ({unit}) of at most {MAX_PLAN_NUMBER:,.0f}, "
+            f"got {value:g}",
+            path=file,
+        )
 
 
 def _rotate(

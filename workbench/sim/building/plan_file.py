@@ -37,13 +37,25 @@ The format (lengths in m, angles in degrees; every key but the walls' ends is op
 
 from __future__ import annotations
 
+import bisect
 import difflib
 import json
 import math
 import os
+import reprlib
 from pathlib import Path
 from typing import Any
 
+from workbench.sim.building.limits import (
+    MAX_PLAN_ITEMS,
+    MAX_PLAN_LEVELS,
+    MAX_PLAN_NUMBER,
+    MAX_PLAN_OPENINGS,
+    MAX_PLAN_STAIRS,
+    MAX_PLAN_WALLS,
+    MAX_STEPS,
+    PLAN_TREE_LIMITS,
+)
 from workbench.sim.building.plan import (
     DEFAULT_DOOR_HEIGHT,
     DEFAULT_HEIGHT,
@@ -109,30 +121,30 @@ def load_plan(path: str | os.PathLike[str]) -> BuildingPlan:
         PlanError: The file is missing or not YAML/JSON, or the plan is wrong; one
             line naming the file and the element.
     """
+    from workbench.limits import check_tree, load_yaml, read_text_bounded
+
     file = Path(path)
-    try:
-        text = file.read_text()
-    except FileNotFoundError:
-        raise PlanError("plan file not found", path=file) from None
-    except (OSError, UnicodeDecodeError) as error:
-        raise PlanError(f"cannot read the plan file: {error}", path=file) from None
+    text = read_text_bounded(file, "plan file", PlanError)
     if file.suffix.lower() == ".json":
+        limits = PLAN_TREE_LIMITS
         try:
             doc = json.loads(text)
         except json.JSONDecodeError as error:
             raise PlanError(f"not JSON: {error.msg}", path=file, line=error.lineno) from None
-    else:
-        import yaml
-
-        try:
-            doc = yaml.safe_load(text)
-        except yaml.YAMLError as error:
-            mark = getattr(error, "problem_mark", None)
+        except RecursionError:  # the C decoder's own depth guard, far below the text's end
             raise PlanError(
-                f"not YAML: {getattr(error, 'problem', None) or error}",
+                f"plan file is nested more than {limits.max_depth} levels deep",
                 path=file,
-                line=mark.line + 1 if mark is not None else None,
+                hint="flatten it",
             ) from None
+        except ValueError as error:  # a number of more digits than Python converts
+            raise PlanError(
+                f"plan file holds a value JSON cannot build: {str(error).split(';')[0]}",
+                path=file,
+            ) from None
+        check_tree(doc, "plan file", limits, PlanError, file)
+    else:
+        doc = load_yaml(text, "plan file", PLAN_TREE_LIMITS, PlanError, file)
     return plan_from_dict(doc, source=str(file), name=file.stem)
 
 
@@ -168,16 +180,20 @@ def plan_from_dict(doc: Any, *, source: str | None = None, name: str = "building
     if "levels" in plan_doc and "walls" in plan_doc:
         raise reader.error("the plan has both 'levels' and 'walls'", "put the walls into a level")
     if "levels" in plan_doc:
-        level_docs = reader.sequence(plan_doc["levels"], "'levels'")
+        level_docs = reader.sequence(plan_doc["levels"], "'levels'", MAX_PLAN_LEVELS)
     else:
         level_docs = [{"name": "ground", "walls": plan_doc.get("walls", [])}]
     counter = [0]
     for index, level_doc in enumerate(level_docs):
         plan.levels.append(reader.level(level_doc, index, defaults, counter))
-    for index, stairs_doc in enumerate(reader.sequence(plan_doc.get("stairs", []), "'stairs'")):
+    for index, stairs_doc in enumerate(
+        reader.sequence(plan_doc.get("stairs", []), "'stairs'", MAX_PLAN_STAIRS)
+    ):
         plan.stairs.append(reader.stairs(stairs_doc, index))
     first = plan.levels[0].name if plan.levels else "ground"
-    for index, item_doc in enumerate(reader.sequence(plan_doc.get("furniture", []), "'furniture'")):
+    for index, item_doc in enumerate(
+        reader.sequence(plan_doc.get("furniture", []), "'furniture'", MAX_PLAN_ITEMS)
+    ):
         plan.items.append(reader.item(item_doc, index, first))
     for level in plan.levels:
         if level.floor is not None and level.floor.high == (math.inf, math.inf):
@@ -206,6 +222,8 @@ class _Reader:
 
     def __init__(self, source: str | None) -> None:
         self.source = source
+        self.walls_read = 0
+        self.openings_read = 0
 
     def error(self, message: str, hint: str | None = None) -> PlanError:
         return PlanError(message, path=self.source, hint=hint)
@@ -215,19 +233,37 @@ class _Reader:
             raise self.error(f"{what} must be a mapping of keys to values, got {_kind(value)}")
         for key in value:
             if key not in keys:
-                close = difflib.get_close_matches(str(key), sorted(keys), n=1)
+                text = str(key) if isinstance(key, str) else _shown(key)
+                close = difflib.get_close_matches(text[:100], sorted(keys), n=1)
                 hint = (
                     f"did you mean '{close[0]}'?" if close else "keys: " + ", ".join(sorted(keys))
                 )
-                raise self.error(f"{what}: unknown key '{key}'", hint)
+                shown = text if len(text) <= 40 else text[:37] + "..."
+                raise self.error(f"{what}: unknown key '{shown}'", hint)
         return value
 
-    def sequence(self, value: Any, what: str) -> list[Any]:
+    def sequence(self, value: Any, what: str, most: int | None = None) -> list[Any]:
         if value is None:
             return []
         if not isinstance(value, list):
             raise self.error(f"{what} must be a list, got {_kind(value)}")
+        if most is not None and len(value) > most:
+            raise self.error(
+                f"{what} has {len(value):,} entries; a plan may have at most {most:,}",
+                "split the building into several plans",
+            )
         return value
+
+    def count(self, attribute: str, added: int, what: str, most: int, *, keep: bool = True) -> None:
+        """Add ``added`` to the plan's tally of ``what`` (only check, unless ``keep``);
+        refuse it past ``most``."""
+        total = getattr(self, attribute) + added
+        if keep:
+            setattr(self, attribute, total)
+        if total > most:
+            raise self.error(
+                f"the plan has more than {most:,} {what}", "split the building into several plans"
+            )
 
     def number(
         self, doc: dict[str, Any], key: str, what: str, default: float | None = None
@@ -240,25 +276,41 @@ class _Reader:
         if (
             isinstance(value, bool)
             or not isinstance(value, int | float)
-            or not math.isfinite(value)
+            or (isinstance(value, float) and not math.isfinite(value))
         ):
-            raise self.error(f"{what}: '{key}' must be a number, got {value!r}")
+            raise self.error(f"{what}: '{key}' must be a number, got {_shown(value)}")
+        if not _within(value):
+            raise self.error(
+                f"{what}: '{key}' is {_shown(value)}, beyond the {MAX_PLAN_NUMBER:,.0f} a plan "
+                "allows"
+            )
         return float(value)
 
     def text(self, doc: dict[str, Any], key: str, what: str, default: str) -> str:
+        from workbench.model.limits import name_problem
+
         value = doc.get(key, default)
-        if not isinstance(value, str | int) or isinstance(value, bool) or not str(value).strip():
-            raise self.error(f"{what}: '{key}' must be a name, got {value!r}")
-        return str(value).strip()
+        if isinstance(value, int) and not isinstance(value, bool) and abs(value) < 10**256:
+            value = str(value)
+        if not isinstance(value, str) or not value.strip():
+            raise self.error(f"{what}: '{key}' must be a name, got {_shown(value)}")
+        text = value.strip()
+        problem = name_problem(text)
+        if problem is not None:
+            raise self.error(f"{what}: '{key}' {_shown(text)} {problem}", "use a short name")
+        return text
 
     def point(self, value: Any, what: str) -> Point:
         if (
             not isinstance(value, list | tuple)
             or len(value) != 2
             or not all(isinstance(v, int | float) and not isinstance(v, bool) for v in value)
-            or not all(math.isfinite(v) for v in value)
+            or not all(_within(v) for v in value)
         ):
-            raise self.error(f"{what} must be a point [x, y] in m, got {value!r}")
+            raise self.error(
+                f"{what} must be a point [x, y] in m, each within {MAX_PLAN_NUMBER:,.0f}, "
+                f"got {_shown(value)}"
+            )
         return (float(value[0]), float(value[1]))
 
     def colour(self, doc: dict[str, Any], what: str, default: Colour) -> Colour:
@@ -310,10 +362,9 @@ class _Reader:
         if "points" in doc:
             if "start" in doc or "end" in doc:
                 raise self.error(f"{what} has both 'points' and 'start'/'end'", "give one of them")
-            points = [
-                self.point(p, f"{what}: point {i}")
-                for i, p in enumerate(self.sequence(doc["points"], f"{what}: 'points'"))
-            ]
+            point_docs = self.sequence(doc["points"], f"{what}: 'points'")
+            self.count("walls_read", len(point_docs) - 1, "walls", MAX_PLAN_WALLS, keep=False)
+            points = [self.point(p, f"{what}: point {i}") for i, p in enumerate(point_docs)]
             if doc.get("closed", False) is True and points:
                 points.append(points[0])
             if len(points) < 2:
@@ -324,6 +375,7 @@ class _Reader:
             points = [self.point(doc["start"], f"{what}: 'start'"),
                       self.point(doc["end"], f"{what}: 'end'")]  # fmt: skip
         chain = len(points) > 2
+        self.count("walls_read", len(points) - 1, "walls", MAX_PLAN_WALLS)
         walls = [
             Wall(
                 name=f"{name}_{i}" if chain else name,
@@ -337,12 +389,13 @@ class _Reader:
             )
             for i in range(len(points) - 1)
         ]
+        ends = list(_chain_ends(walls))
         for kind in ("door", "window"):
-            for i, opening_doc in enumerate(
-                self.sequence(doc.get(f"{kind}s", []), f"{what}: '{kind}s'")
-            ):
+            opening_docs = self.sequence(doc.get(f"{kind}s", []), f"{what}: '{kind}s'")
+            self.count("openings_read", len(opening_docs), "doors and windows", MAX_PLAN_OPENINGS)
+            for i, opening_doc in enumerate(opening_docs):
                 opening = self.opening(opening_doc, kind, i, what, name)
-                _place_opening(opening, walls, what, self)
+                _place_opening(opening, walls, ends, what, self)
         return walls
 
     def opening(self, doc: Any, kind: str, index: int, what: str, wall: str) -> Opening:
@@ -370,7 +423,12 @@ class _Reader:
         what = f"stairs '{name}'"
         steps = doc.get("steps", 10)
         if isinstance(steps, bool) or not isinstance(steps, int):
-            raise self.error(f"{what}: 'steps' must be a whole number, got {steps!r}")
+            raise self.error(f"{what}: 'steps' must be a whole number, got {_shown(steps)}")
+        if not 1 <= steps <= MAX_STEPS:
+            raise self.error(
+                f"{what}: 'steps' must be 1 to {MAX_STEPS:,}, got {_shown(steps)}",
+                "a flight has a step every 15 to 20 cm",
+            )
         for key in ("from", "to"):
             if key not in doc:
                 raise self.error(f"{what} needs '{key}' (a level name)")
@@ -389,9 +447,11 @@ class _Reader:
     def item(self, doc: Any, index: int, level: str) -> Item:
         what = f"furniture {index}"
         doc = self.mapping(doc, what, _ITEM_KEYS)
-        shape = str(doc.get("type", "box"))
+        shape = doc.get("type", "box")
         if shape not in _ITEM_TYPES:
-            raise self.error(f"{what}: unknown type '{shape}'", "types: " + ", ".join(_ITEM_TYPES))
+            raise self.error(
+                f"{what}: unknown type {_shown(shape)}", "types: " + ", ".join(_ITEM_TYPES)
+            )
         name = self.text(doc, "name", what, f"{shape}_{index}")
         what = f"furniture '{name}'"
         if shape == "cylinder":
@@ -409,8 +469,12 @@ class _Reader:
                 not isinstance(raw, list)
                 or len(raw) != 3
                 or not all(isinstance(v, int | float) and not isinstance(v, bool) for v in raw)
+                or not all(_within(v) for v in raw)
             ):
-                raise self.error(f"{what} needs 'size: [x, y, z]' in m, got {raw!r}")
+                raise self.error(
+                    f"{what} needs 'size: [x, y, z]' in m, each within {MAX_PLAN_NUMBER:,.0f}, "
+                    f"got {_shown(raw)}"
+                )
             size = (float(raw[0]), float(raw[1]), float(raw[2]))
             radius = 0.0
         return Item(
@@ -425,31 +489,47 @@ class _Reader:
         )
 
 
-def _place_opening(opening: Opening, walls: list[Wall], what: str, reader: _Reader) -> None:
+def _chain_ends(walls: list[Wall]) -> list[float]:
+    """How far along the chain each wall ends, m."""
+    ends, offset = [], 0.0
+    for wall in walls:
+        offset += wall.length
+        ends.append(offset)
+    return ends
+
+
+def _place_opening(
+    opening: Opening, walls: list[Wall], ends: list[float], what: str, reader: _Reader
+) -> None:
     """Put ``opening`` (``at`` along the whole chain) on the segment that holds its centre.
 
-    One reaching past the chain's ends is left to :meth:`BuildingPlan.validate` to report.
+    ``ends``: :func:`_chain_ends` of ``walls``. One reaching past the chain's ends is left
+    to :meth:`BuildingPlan.validate` to report.
     """
-    offset = 0.0
-    for wall in walls:
-        length = wall.length
-        if opening.at <= offset + length + EPS or wall is walls[-1]:
-            low, high = opening.at - opening.width / 2, opening.at + opening.width / 2
-            before = low < offset - EPS and wall is not walls[0]
-            after = high > offset + length + EPS and wall is not walls[-1]
-            if before or after:
-                corner = wall.start if before else wall.end
-                raise reader.error(
-                    f"{what}: {opening.kind} '{opening.name}' reaches round the corner at "
-                    f"({corner[0]:g}, {corner[1]:g})",
-                    "an opening must lie within one straight segment of the wall",
-                )
-            at = opening.at - offset
-            wall.openings.append(
-                Opening(opening.kind, opening.name, at, opening.width, opening.height, opening.sill)
-            )
-            return
-        offset += length
+    index = min(bisect.bisect_left(ends, opening.at - EPS), len(walls) - 1)
+    wall = walls[index]
+    offset = ends[index - 1] if index else 0.0
+    length = wall.length
+    low, high = opening.at - opening.width / 2, opening.at + opening.width / 2
+    before = low < offset - EPS and wall is not walls[0]
+    after = high > offset + length + EPS and wall is not walls[-1]
+    if before or after:
+        corner = wall.start if before else wall.end
+        raise reader.error(
+            f"{what}: {opening.kind} '{opening.name}' reaches round the corner at "
+            f"({corner[0]:g}, {corner[1]:g})",
+            "an opening must lie within one straight segment of the wall",
+        )
+    wall.openings.append(
+        Opening(
+            opening.kind,
+            opening.name,
+            opening.at - offset,
+            opening.width,
+            opening.height,
+            opening.sill,
+        )
+    )
 
 
 def parse_colour(value: Any, what: str, source: str | None = None) -> Colour:
@@ -483,10 +563,26 @@ def parse_colour(value: Any, what: str, source: str | None = None) -> Colour:
             return names[key]
     names_list = ", ".join(k.removeprefix("Gazebo/") for k in GAZEBO_COLOURS)
     raise PlanError(
-        f"{what}: colour {value!r} is not [r, g, b(, a)] in 0..1, '#rrggbb' or a Gazebo colour",
+        f"{what}: colour {_shown(value)} is not [r, g, b(, a)] in 0..1, '#rrggbb' or a Gazebo colour",
         path=source,
         hint=f"names: {names_list}",
     )
+
+
+_SHORT = reprlib.Repr()
+_SHORT.maxlevel, _SHORT.maxlist, _SHORT.maxdict = 3, 4, 4
+_SHORT.maxstring = _SHORT.maxother = _SHORT.maxlong = 40
+
+
+def _within(value: float) -> bool:
+    """A finite number of magnitude at most :data:`MAX_PLAN_NUMBER` (NaN is not; a 400-digit
+    integer is compared exactly, never converted to a float)."""
+    return abs(value) <= MAX_PLAN_NUMBER
+
+
+def _shown(value: Any) -> str:
+    """``repr(value)`` cut short, for messages: a plan's values may be huge or deep."""
+    return _SHORT.repr(value)
 
 
 def _kind(value: Any) -> str:

@@ -69,35 +69,103 @@ def save_building(
     ``NAME.world`` there. A model written to a folder (an existing one, or a
     path without a suffix) becomes a Gazebo model folder, ``model.config`` and
     ``model.sdf``, for ``GAZEBO_MODEL_PATH`` and ``model://``; otherwise one file.
+    Outputs follow :mod:`workbench.output_files`: no folder is created but a new
+    model folder itself (in a folder that exists), and an existing file is replaced
+    only when ``workbench world build`` wrote it.
 
     Raises:
         PlanError: The plan is not valid or the file cannot be written.
     """
-    target = Path(path)
+    from workbench.output_files import write_output
+
     kind = kind or "world"
+    files = check_building_output(path, kind, plan.name)
     text = plan_to_sdf(plan, kind)
-    files: list[tuple[Path, str]]
-    if kind == "model" and (target.is_dir() or not target.suffix):
-        config = (
-            '<?xml version="1.0"?>\n<model>\n'
-            f"  <name>{escape(plan.name)}</name>\n"
-            '  <version>1.0</version>\n  <sdf version="1.6">model.sdf</sdf>\n'
-            f"  <description>{escape(plan.summary())}</description>\n</model>\n"
-        )
-        files = [(target / "model.config", config), (target / "model.sdf", text)]
-    elif target.is_dir():
-        files = [(target / f"{plan.name}.{'world' if kind == 'world' else 'sdf'}", text)]
-    else:
-        files = [(target, text)]
-    for file, content in files:
+    target = Path(path)
+    if not files:  # a new model folder, in a folder that exists
         try:
-            file.parent.mkdir(parents=True, exist_ok=True)
-            file.write_text(content)
+            target.mkdir()
         except OSError as error:
             raise PlanError(
-                f"cannot write the building: {error.strerror}", path=file, hint="choose another -o"
+                f"cannot create the model folder: {error.strerror}",
+                path=target,
+                hint="choose another -o",
             ) from None
-    return [file for file, _ in files]
+        files = check_building_output(path, kind, plan.name)
+    contents = [_model_config(plan), text] if len(files) == 2 else [text]
+    for file, content in zip(files, contents, strict=True):
+        write_output(file, content, error=PlanError)
+    return files
+
+
+def check_building_output(
+    path: str | os.PathLike[str], kind: Literal["world", "model"], name: str | None = None
+) -> list[Path]:
+    """Check, before any work, that a building of ``kind`` may be written to ``path``.
+
+    Args:
+        path: Where the user asked for it (a file, or a folder).
+        kind: ``world`` or ``model``.
+        name: The building's name, which names the file written into an existing
+            folder; None to check only what does not depend on it.
+
+    Returns:
+        The files that will be written (none yet for a model folder still to be made).
+
+    Raises:
+        PlanError: The folder is missing, the target is a pipe or device, or an
+            existing file was not written by ``workbench world build``.
+    """
+    from workbench.output_files import check_output
+
+    if not os.fspath(path).strip():
+        raise PlanError("no output given: -o needs a .world/.sdf file or a folder")
+    target = Path(path)
+    folder = _is_dir(target)
+    if kind == "model" and (folder or not target.suffix):
+        if not folder:
+            parent = target.parent if str(target.parent) else Path(".")
+            if target.exists() or target.is_symlink():
+                raise PlanError(
+                    "cannot write the model folder: this is not a folder",
+                    path=target,
+                    hint="give a folder for model.config and model.sdf, or a .sdf file",
+                )
+            if not _is_dir(parent):
+                raise PlanError(
+                    f"cannot write the model folder: the folder {parent} does not exist",
+                    path=target,
+                    hint="create it first; workbench creates only the model folder itself",
+                )
+            return []
+        pairs = [
+            (target / "model.config", "building-model-config"),
+            (target / "model.sdf", "building-sdf"),
+        ]
+    elif folder:
+        if name is None:
+            return []
+        pairs = [(target / f"{name}.{'world' if kind == 'world' else 'sdf'}", "building-sdf")]
+    else:
+        pairs = [(target, "building-sdf")]
+    return [check_output(file, what, error=PlanError) for file, what in pairs]
+
+
+def _model_config(plan: BuildingPlan) -> str:
+    return (
+        '<?xml version="1.0"?>\n'
+        f"<!-- Written by 'workbench world build'. -->\n<model>\n"
+        f"  <name>{escape(plan.name)}</name>\n"
+        '  <version>1.0</version>\n  <sdf version="1.6">model.sdf</sdf>\n'
+        f"  <description>{escape(plan.summary())}</description>\n</model>\n"
+    )
+
+
+def _is_dir(path: Path) -> bool:
+    try:
+        return path.is_dir()
+    except (OSError, ValueError):  # a name too long to look up
+        return False
 
 
 def _model(name: str, pieces: list[Piece], indent: int) -> list[str]:
