@@ -5,7 +5,7 @@ Each kind (parameters, launch, bags, logs, maps) has a ``cases.yaml``: a list of
 
 ``name``    what the case is;
 ``argv``    the ``workbench`` command line, with ``{dir}`` (the kind's folder), ``{input}``
-            (the input ``make`` created), ``{tmp}`` (the case's own empty folder) and
+            (the input ``make`` created), ``{repo}`` (the checkout), ``{tmp}`` (the case's own empty folder) and
             ``{text:FILE}`` (the contents of ``FILE`` of the kind's folder);
 ``make``    optional: the name of a generator below, for inputs too large or too special to
             store (a FIFO, a 2 MB gzip bomb, a 100,000-character name);
@@ -172,13 +172,15 @@ def _expand(word: str, kind: str, tmp: Path, made: str) -> str:
         end = word.index("}", start)
         name = word[start + len("{text:") : end]
         word = word[:start] + (folder / name).read_text() + word[end + 1 :]
+    word = word.replace("{repo}", str(HOSTILE.parents[2]))
     return word.replace("{dir}", str(folder)).replace("{tmp}", str(tmp)).replace("{input}", made)
 
 
 def _unexpand(text: str, kind: str, tmp: Path, made: str) -> str:
     if made:
         text = text.replace(made, "{input}")
-    return text.replace(str(tmp), "{tmp}").replace(str(HOSTILE / kind), "{dir}")
+    text = text.replace(str(tmp), "{tmp}").replace(str(HOSTILE / kind), "{dir}")
+    return text.replace(str(HOSTILE.parents[2]), "{repo}")
 
 
 @contextlib.contextmanager
