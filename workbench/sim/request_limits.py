@@ -54,7 +54,7 @@ def out_of_bounds(values: Iterable[tuple[str, float]], limit: float, unit: str) 
         if not math.isfinite(number):
             return f"{name} is not finite"
         if abs(number) > limit:
-            return f"{name} = {number:g} is beyond {limit:g}{' ' + unit if unit else ''}"
+            return f"{name} = {number!r} is beyond {limit:g}{' ' + unit if unit else ''}"
     return None
 
 

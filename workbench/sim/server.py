@@ -560,7 +560,7 @@ class SimServer:
         """Apply ``effort`` on the joint named so in any model from ``start`` for ``duration`` s."""
 
         def work() -> None:
-            owner = self._joint_owner(joint_name)
+            owner = self.joint_owner(joint_name)
             begin = max(start, self.world.time)
             # Gazebo applies it in every update with time <= start + duration (both ends).
             end = math.inf if duration < 0 else begin + duration + 0.5 * self.world.time_step
@@ -598,7 +598,12 @@ class SimServer:
 
         return scoped(instance_name, body.name())
 
-    def _joint_owner(self, joint_name: str) -> str:
+    def joint_owner(self, joint_name: str) -> str:
+        """The model that has the joint ``joint_name`` (``model::joint`` or a bare name).
+
+        Raises:
+            SimulationError: No model has it.
+        """
         plant = self.world.plant
         model, _, joint = joint_name.rpartition("::")
         names = [model] if model else [n for n in self.world.model_names() if n != "ground_plane"]
