@@ -231,7 +231,7 @@ class SimServer:
         try:
             world.advance_to(target)
         except SimulationError as error:
-            self._blow_up(" ".join(str(error.message).split()), until)
+            self._blow_up(_first_sentence(str(error.message)), until)
             return
         if not t < world.time < self._next_finite_check:  # due, or time went back
             if not world.state_is_finite():
@@ -283,7 +283,7 @@ class SimServer:
             self._pace_reset = True
 
     def _blow_up(self, why: str, until: float | None = None) -> None:
-        model = _failed_model(self.world)
+        model = _failed_model(self.world, why)
         self.error = f"{f'model {model!r}: ' if model else ''}{why}"
         self.paused = True
         self._failure_pause = True
@@ -657,17 +657,28 @@ def _check_plugin_numbers(
         raise SimulationError(f"{what + ' ' if what else ''}{reason}")
 
 
-def _failed_model(world: Any) -> str | None:
-    """The first model whose positions or velocities are NaN or infinite (None: none is)."""
+def _first_sentence(text: str) -> str:
+    """Drake's failure messages go on with advice for C++ users: their first sentence, one line."""
+    line = " ".join(text.split())
+    head, dot, _ = line.partition(". ")
+    return head + dot.strip()
+
+
+def _failed_model(world: Any, why: str) -> str | None:
+    """The model that failed: the first with a NaN or infinite state, else one whose body
+    Drake's message names (None: neither)."""
     try:
         plant = world.plant
         context = plant.GetMyContextFromRoot(world.context)
-        for name in world.model_names():
-            if name == GROUND_NAME:
-                continue
+        names = [n for n in world.model_names() if n != GROUND_NAME]
+        for name in names:
             state = plant.GetPositionsAndVelocities(context, world.model_instance(name))
             if not np.all(np.isfinite(state)):
                 return str(name)
+        for name in names:
+            for index in plant.GetBodyIndices(world.model_instance(name)):
+                if f"body {plant.get_body(index).name()} " in why + " ":
+                    return str(name)
     except (RuntimeError, SimulationError):  # a world Drake could not even evaluate
         return None
     return None
