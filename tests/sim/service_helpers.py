@@ -58,6 +58,10 @@ class Gazebo:
         assert reply.success, reply.status_message
         return float(reply.sim_time)
 
+    def model_names(self) -> list[str]:
+        reply = self.call("get_world_properties", gm.GetWorldProperties.Request())
+        return list(reply.model_names)
+
     def clean_up(self) -> None:
         """Wrenches and efforts off, models back where they were spawned, physics running."""
         self.call("clear_body_wrenches", gm.BodyRequest.Request(body_name="box::body"))

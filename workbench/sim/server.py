@@ -561,10 +561,12 @@ class SimServer:
 
         def work() -> None:
             owner = self.joint_owner(joint_name)
+            joint = joint_name.rpartition("::")[2]
+            if self.world.joint(owner, joint).num_velocities() != 1:  # a free body's own joint
+                raise SimulationError(f"joint '{joint_name}' is not a 1-dof joint")
             begin = max(start, self.world.time)
             # Gazebo applies it in every update with time <= start + duration (both ends).
             end = math.inf if duration < 0 else begin + duration + 0.5 * self.world.time_step
-            joint = joint_name.rpartition("::")[2]
             self._api_jobs.append(_Job(begin, end, joint=(owner, joint), effort=float(effort)))
             self._push_forces()
 
