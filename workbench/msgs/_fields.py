@@ -112,7 +112,10 @@ def scalar_checker(prim: str) -> Callable[[Any], Any]:
             if isinstance(value, float):
                 return value
             if isinstance(value, (int, np.integer, np.floating)) and not isinstance(value, bool):
-                return float(value)
+                try:
+                    return float(value)
+                except OverflowError:  # an int past 1.8e308 has no float
+                    raise BadValue("a float (this integer is too large for one)") from None
             raise BadValue("a float")
 
         return check_float

@@ -29,11 +29,13 @@ def _split(secs: Any, nsecs: Any, kind: str) -> tuple[int, int]:
             raise MessageError(f"{kind} seconds must be finite; got {secs!r}")
         if nsecs:
             raise MessageError(f"{kind}: give float seconds alone, or integer secs and nsecs")
+        if abs(value) > 2.0**63 / _NS:  # no ROS time has it, and value * 1e9 may overflow
+            raise MessageError(f"{kind} of {secs!r} s is out of range")
         total = round(value * _NS)
     else:
         try:
             total = secs * _NS + int(nsecs)
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):
             raise MessageError(f"{kind} nanoseconds must be an integer; got {nsecs!r}") from None
     return divmod(total, _NS)
 

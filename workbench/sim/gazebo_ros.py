@@ -23,6 +23,18 @@ from typing import Any
 import numpy as np
 
 from workbench.errors import SimulationError, WorkbenchError
+from workbench.sim.request_limits import (
+    MAX_ANGULAR_SPEED,
+    MAX_EFFORT,
+    MAX_FORCE,
+    MAX_JOINT_POSITION,
+    MAX_LINEAR_SPEED,
+    MAX_POSITION,
+    MAX_QUATERNION,
+    MAX_TORQUE,
+    out_of_bounds,
+    xyz,
+)
 from workbench.sim.server import SimServer
 
 _LOG = logging.getLogger("workbench.sim")
@@ -253,6 +265,12 @@ class GazeboRosApi:
         if state.model_name not in self._deletable():
             _LOG.error("Updating ModelState: model [%s] does not exist", state.model_name)
             return False, "SetModelState: model does not exist"
+        reason = out_of_bounds(
+            xyz("twist.linear", state.twist.linear), MAX_LINEAR_SPEED, "m/s"
+        ) or out_of_bounds(xyz("twist.angular", state.twist.angular), MAX_ANGULAR_SPEED, "rad/s")
+        if reason is not None:
+            _LOG.error("Updating ModelState: model [%s]: %s", state.model_name, reason)
+            return False, f"SetModelState: {reason}"
         try:
             X = _transform(state.pose, "pose")
             v = _vector(state.twist.linear)
@@ -283,6 +301,18 @@ class GazeboRosApi:
                 success=False,
                 status_message="SetModelConfiguration: joint name and position list have "
                 "different lengths",
+            )
+        reason = out_of_bounds(
+            (
+                (f"position of joint '{name}'", value)
+                for name, value in zip(request.joint_names, request.joint_positions, strict=True)
+            ),
+            MAX_JOINT_POSITION,
+            "rad or m",
+        )
+        if reason is not None:
+            return SetModelConfiguration.Response(
+                success=False, status_message=f"SetModelConfiguration: {reason}"
             )
         positions = dict(zip(request.joint_names, request.joint_positions, strict=True))
         try:
@@ -352,6 +382,21 @@ class GazeboRosApi:
     def _apply_body_wrench(self, request: Any) -> Any:
         from workbench.msgs.gazebo_msgs import ApplyBodyWrench
 
+        if not self._has_body(request.body_name):
+            _LOG.error("ApplyBodyWrench: body [%s] does not exist", request.body_name)
+            return ApplyBodyWrench.Response(
+                success=False, status_message="ApplyBodyWrench: body does not exist"
+            )
+        reason = (
+            out_of_bounds(xyz("wrench.force", request.wrench.force), MAX_FORCE, "N")
+            or out_of_bounds(xyz("wrench.torque", request.wrench.torque), MAX_TORQUE, "N m")
+            or out_of_bounds(xyz("reference_point", request.reference_point), MAX_POSITION, "m")
+        )
+        if reason is not None:
+            _LOG.error("ApplyBodyWrench: body [%s]: %s", request.body_name, reason)
+            return ApplyBodyWrench.Response(
+                success=False, status_message=f"ApplyBodyWrench: {reason}"
+            )
         force, torque = _vector(request.wrench.force), _vector(request.wrench.torque)
         try:
             if request.reference_frame not in _WORLD_FRAMES:
@@ -379,6 +424,16 @@ class GazeboRosApi:
             )
         return ApplyBodyWrench.Response(success=True, status_message="")
 
+    def _has_body(self, body_name: str) -> bool:
+        def work() -> bool:
+            try:
+                self.server.world.body(body_name)
+            except SimulationError:
+                return False
+            return True
+
+        return bool(self.server.call(work))
+
     def _body_rotation(self, body_name: str, point: np.ndarray) -> np.ndarray:
         def work() -> np.ndarray:
             world = self.server.world
@@ -391,9 +446,14 @@ class GazeboRosApi:
     def _apply_joint_effort(self, request: Any) -> Any:
         from workbench.msgs.gazebo_msgs import ApplyJointEffort
 
+        reason = out_of_bounds([("effort", request.effort)], MAX_EFFORT, "N m or N")
         try:
-            if not np.isfinite(request.effort):
-                raise SimulationError("effort is not finite")
+            if reason is not None:
+                self.server.call(lambda: self.server.joint_owner(request.joint_name))
+                _LOG.error("ApplyJointEffort: joint [%s]: %s", request.joint_name, reason)
+                return ApplyJointEffort.Response(
+                    success=False, status_message=f"ApplyJointEffort: {reason}"
+                )
             self.server.apply_joint_effort(
                 request.joint_name,
                 request.effort,
@@ -480,14 +540,20 @@ def _transform(pose: Any, what: str) -> Any:
     from pydrake.common.eigen_geometry import Quaternion
     from pydrake.math import RigidTransform, RotationMatrix
 
-    p = _vector(pose.position)
-    q = np.array(
-        [pose.orientation.w, pose.orientation.x, pose.orientation.y, pose.orientation.z], float
+    o = pose.orientation
+    reason = out_of_bounds(xyz(f"{what}.position", pose.position), MAX_POSITION, "m") or (
+        out_of_bounds(
+            [(f"{what}.orientation.{k}", getattr(o, k)) for k in ("x", "y", "z", "w")],
+            MAX_QUATERNION,
+            "",
+        )
     )
-    if not (np.all(np.isfinite(p)) and np.all(np.isfinite(q))):
-        raise SimulationError(f"{what} is not finite (NaN or infinite values)")
+    if reason is not None:
+        raise SimulationError(reason)
+    p = _vector(pose.position)
+    q = np.array([o.w, o.x, o.y, o.z], float)
     norm = float(np.linalg.norm(q))
-    if norm < 1e-9:  # Gazebo normalises; an all-zero quaternion means no rotation
+    if norm < 1e-6:  # Gazebo normalises; a zero-length quaternion means no rotation
         q, norm = np.array([1.0, 0.0, 0.0, 0.0]), 1.0
     # pydrake's stubs give numpy arrays a float64 shape; these vectors are right
     return RigidTransform(RotationMatrix(Quaternion(q / norm)), p)  # type: ignore[arg-type]

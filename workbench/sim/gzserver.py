@@ -103,14 +103,15 @@ def options_from(args: argparse.Namespace) -> ServerOptions:
     )
 
 
-def build_server(options: ServerOptions, bus: Any = None) -> tuple[Any, Any, Any]:
-    """The world, server and live view (or None) for ``options``, with its models and plugins.
+def check_options(options: ServerOptions) -> Any:
+    """Check ``options`` and read the world file, touching nothing else (no bus, no core).
+
+    Returns:
+        The :class:`~workbench.sim.world_file.WorldFile` of ``options.world``.
 
     Raises:
-        SimulationError: An unreadable world, an unloadable model, bad options.
+        SimulationError: A bad option, an unknown or unreadable world.
     """
-    from workbench.sim.server import SERVER_PHYSICS, SimServer
-    from workbench.sim.world import World
     from workbench.sim.world_file import load_world
 
     if options.until is not None and not (options.until >= 0):
@@ -121,9 +122,31 @@ def build_server(options: ServerOptions, bus: Any = None) -> tuple[Any, Any, Any
     step = options.max_step_size
     if step is not None and not (0 < step <= 0.1):
         raise SimulationError(f"--max-step-size must be in (0, 0.1] s, got {step}")
+    return load_world(options.world)
+
+
+def build_server(
+    options: ServerOptions, bus: Any = None, world_file: Any = None
+) -> tuple[Any, Any, Any]:
+    """The world, server and live view (or None) for ``options``, with its models and plugins.
+
+    Args:
+        options: What to run.
+        bus: The bus plugins' nodes join (None: plugins get no node).
+        world_file: The world :func:`check_options` read (None: checked and read here).
+
+    Raises:
+        SimulationError: An unreadable world, an unloadable model, bad options.
+    """
+    from workbench.sim.server import SERVER_PHYSICS, SimServer
+    from workbench.sim.world import World
+
+    if world_file is None:
+        world_file = check_options(options)
+    rtf = options.real_time_factor
+    step = options.max_step_size
     random.seed(options.seed)
     np.random.seed(options.seed)
-    world_file = load_world(options.world)
     physics = world_file.physics
     if step is None:
         step = physics.time_step or SERVER_PHYSICS["time_step"]
@@ -203,18 +226,29 @@ def _command_line_plugin(filename: str, model: str) -> Any:
 
 
 def run_server(options: ServerOptions) -> int:
-    """Serve until ``until`` or a stop signal; 0 when it ran, 1 when it could not start."""
+    """Serve until ``until`` or a stop signal; 0 when it ran.
+
+    The options and the world are checked before anything joins the graph: a server
+    that cannot start never registers as ``/gazebo`` (which would shut down a running
+    one, as a ROS master does with a second node of the same name).
+
+    Raises:
+        SimulationError: It could not start, or a run to ``--until`` ended early
+            because the physics failed (the message names the model).
+    """
     from workbench.bus import Bus, Node
     from workbench.sim.gazebo_ros import GazeboRosApi
 
+    world_file = check_options(options)
     core = None
     if options.start_core:
         core = _core_if_none()
     bus = Bus.auto(quiet=core is not None)
-    node = Node("gazebo", bus=bus)
+    node = None
     server = api = view = None
     try:
-        world, server, view = build_server(options, bus)
+        world, server, view = build_server(options, bus, world_file)
+        node = Node("gazebo", bus=bus)
         api = GazeboRosApi(server, node)
         if view is not None:
             print(f"[INFO] Meshcat: {view.meshcat.web_url()}", flush=True)
@@ -229,9 +263,14 @@ def run_server(options: ServerOptions) -> int:
         try:
             server.run(until=options.until)
         finally:
-            if server.error is not None:
-                print(f"[ERROR] {server.error}", file=sys.stderr)
             print(f"[INFO] stopped at t = {world.time:.3f} s", flush=True)
+        if server.error is not None and options.until is None:
+            print(f"[ERROR] {server.error}", file=sys.stderr)
+        elif server.error is not None:
+            raise SimulationError(
+                f"the simulation stopped before t = {options.until:g} s: {server.error}",
+                hint="fix the model, or the plugin or request that pushed it",
+            )
         return 0
     finally:
         if view is not None and options.html:
@@ -243,7 +282,8 @@ def run_server(options: ServerOptions) -> int:
             server.stop()
         if view is not None:
             view.close()
-        node.shutdown()
+        if node is not None:
+            node.shutdown()
         bus.shutdown()
         if core is not None:
             core.close()

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from workbench.errors import SimulationError
+
 #: SDFormat's default ``<inertial>``: what Gazebo gives a link that declares none.
 DEFAULT_MASS = 1.0
 DEFAULT_MOMENT = 1.0
@@ -32,9 +34,14 @@ def valid_inertia(matrix: np.ndarray) -> np.ndarray | None:
     """
     if not np.all(np.isfinite(matrix)):
         raise ValueError("inertia entries must be finite")
-    symmetric = 0.5 * (matrix + matrix.T)
-    moments, axes = np.linalg.eigh(symmetric)
+    symmetric = 0.5 * matrix + 0.5 * matrix.T  # halves first: 1e308 + 1e308 overflows
+    with np.errstate(all="ignore"):
+        moments, axes = np.linalg.eigh(symmetric)
+    if not (np.all(np.isfinite(moments)) and np.all(np.isfinite(axes))):
+        raise ValueError("inertia entries too large to find its principal moments")
     fixed = moments.copy()
+    if -fixed[0] > max(fixed[2], 0.0):  # more negative than the body's largest moment
+        raise ValueError("a negative principal moment larger than the others")
     if np.any(fixed < 0):
         fixed = np.maximum(fixed, 0.0)
     small, middle, large = fixed
@@ -44,7 +51,10 @@ def valid_inertia(matrix: np.ndarray) -> np.ndarray | None:
         fixed[1] += deficit / 2 + _SLACK * large
     if np.allclose(fixed, moments, rtol=0, atol=_SLACK * max(abs(large), 1e-12)):
         return None
-    return axes @ np.diag(fixed) @ axes.T
+    result = axes @ np.diag(fixed) @ axes.T
+    if not np.all(np.isfinite(result)):
+        raise ValueError("inertia entries too large to repair")
+    return result
 
 
 def describe(matrix: np.ndarray) -> str:
@@ -64,10 +74,16 @@ _INDEX = ((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2))
 def repaired(values: list[float], link: str, where: str) -> tuple[list[float], str] | None:
     """``(ixx … iyz fixed, warning line)`` when ``values`` break the triangle inequality, else None."""
     matrix = inertia_matrix(*values)
+    if not np.all(np.isfinite(matrix)):
+        return None  # not finite: the parser reports that itself
     try:
         fixed = valid_inertia(matrix)
     except ValueError:
-        return None  # not finite: the parser reports that itself
+        raise SimulationError(
+            f"{where}: link '{link}': inertia {describe(matrix)} is no body's inertia and "
+            "too far from one to repair",
+            hint="give moments of inertia >= 0 that a real body can have (kg m^2)",
+        ) from None
     if fixed is None:
         return None
     warning = (

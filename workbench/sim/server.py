@@ -23,7 +23,7 @@ import math
 import queue
 import threading
 import time
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from concurrent.futures import Future
 from dataclasses import dataclass, field
 from typing import Any
@@ -43,6 +43,8 @@ from workbench.sim.plugins import (
     describe_failure,
     load_plugin_class,
 )
+from workbench.sim.request_limits import MAX_EFFORT, MAX_FORCE, MAX_TORQUE, out_of_bounds
+from workbench.sim.scene import GROUND_NAME
 
 _LOG = logging.getLogger("workbench.sim")
 
@@ -138,6 +140,7 @@ class SimServer:
         self._pace_reset = True
         self._step_request = 0.0
         self._next_finite_check = 0.0
+        self._failure_pause = False
 
     # --- threading -------------------------------------------------------------------
 
@@ -203,6 +206,8 @@ class SimServer:
                 self._run_jobs()
                 if until is not None and self.world.time >= until - 1e-9:
                     break
+                if until is not None and self.error is not None:
+                    break  # the physics failed: a run to a time ends (error says why)
                 if self.paused and self._step_request <= 0:
                     self._wake.wait(0.05)
                     self._wake.clear()
@@ -231,11 +236,11 @@ class SimServer:
         try:
             world.advance_to(target)
         except SimulationError as error:
-            self._blow_up(str(error.message))
+            self._blow_up(_first_sentence(str(error.message)), until)
             return
         if not t < world.time < self._next_finite_check:  # due, or time went back
             if not world.state_is_finite():
-                self._blow_up(f"the state became NaN at t={world.time:.4f} s")
+                self._blow_up(f"the state became NaN or infinite at t={world.time:.4f} s", until)
                 return
             self._next_finite_check = world.time + _FINITE_CHECK_PERIOD
         if self._step_request > 0:
@@ -282,13 +287,17 @@ class SimServer:
         elif ahead < -0.5:  # far behind: do not try to catch up in a burst
             self._pace_reset = True
 
-    def _blow_up(self, why: str) -> None:
-        self.error = why
+    def _blow_up(self, why: str, until: float | None = None) -> None:
+        model = _failed_model(self.world, why)
+        self.error = f"{f'model {model!r}: ' if model else ''}{why}"
         self.paused = True
-        _LOG.error(
-            "simulation stopped: %s; paused (reset with /gazebo/reset_world or delete the model)",
-            why,
-        )
+        self._failure_pause = True
+        if until is None:  # a run to a time ends instead, and its caller reports the error
+            _LOG.error(
+                "simulation stopped: %s; paused (reset with /gazebo/reset_world or delete "
+                "the model)",
+                self.error,
+            )
 
     def _run_jobs(self) -> None:
         while True:
@@ -369,12 +378,15 @@ class SimServer:
             self.world.reset(time=time_too)
             self._api_jobs.clear()
             self.error = None
+            if self._failure_pause:  # paused by a failure, not by a user: run again
+                self.paused = self._failure_pause = False
+                self._wake.set()
             for slot in self._plugins:
                 slot.next_update = self.world.time
                 slot.last_update = None
                 try:
                     slot.plugin.reset()
-                except Exception as error:  # noqa: BLE001 - a plugin's failure
+                except (Exception, SystemExit) as error:  # noqa: BLE001 - a plugin's failure
                     self._disable(slot, error, "reset")
             self._after_rebuild()
 
@@ -403,6 +415,13 @@ class SimServer:
         try:
             source = trust.admit_spawned(spec) if spawned else trust.admit(spec)
             cls = load_plugin_class(spec, source)
+        except SystemExit:  # a plugin file that exits at import must not end the server
+            _LOG.error(
+                "plugin '%s' (%s) called sys.exit while loading: not loaded",
+                spec.name,
+                spec.filename,
+            )
+            return None
         except UnavailablePluginError as error:
             owner = f"model '{model}': " if model else ""
             _LOG.warning("%s%s", owner, error.one_line())
@@ -410,7 +429,14 @@ class SimServer:
         except SimulationError as error:
             _LOG.error("%s", error)
             return None
-        plugin = cls()
+        try:
+            plugin = cls()
+        except (Exception, SystemExit) as error:  # noqa: BLE001 - a plugin's failure
+            reason = f"{type(error).__name__}: {error}"
+            _LOG.error(
+                "plugin '%s' (%s) failed while starting: %s", spec.name, spec.filename, reason
+            )
+            return None
         sdf = SdfElement(spec.element, spec.sensor, spec.reference)
         rate = sdf.get("update_rate", float(getattr(plugin, "update_rate", 0.0) or 0.0))
         period = 1.0 / rate if rate and rate > 0 else 0.0
@@ -438,7 +464,7 @@ class SimServer:
             _LOG.error("%splugin '%s' not loaded: %s", owner, spec.name, error.one_line())
             self._close_plugin(slot)
             return None
-        except Exception as error:  # noqa: BLE001 - a plugin's failure
+        except (Exception, SystemExit) as error:  # noqa: BLE001 - a plugin's failure
             self._disable(slot, error, "load")
             return None
         own_rate = float(getattr(plugin, "update_rate", 0.0) or 0.0)
@@ -462,17 +488,27 @@ class SimServer:
 
     def set_plugin_effort(self, owner: Any, key: tuple[str, str], effort: float) -> None:
         """Set a joint effort ``{(model, joint): effort}`` until ``owner``'s next update."""
+        _check_plugin_numbers([(f"effort on joint '{key[1]}'", effort)], MAX_EFFORT, "N m or N")
         owner.efforts[key] = effort
         self._push_forces()
 
     def set_plugin_efforts(self, owner: Any, efforts: Mapping[tuple[str, str], float]) -> None:
         """Set several joint efforts ``{(model, joint): effort}`` until ``owner``'s next update."""
+        _check_plugin_numbers(
+            [(f"effort on joint '{joint}'", value) for (_, joint), value in efforts.items()],
+            MAX_EFFORT,
+            "N m or N",
+        )
         owner.efforts.update(efforts)
         self._push_forces()
 
     def set_plugin_wrench(self, owner: Any, body: str, force: Any, torque: Any) -> None:
         """Add a wrench on ``body`` (scoped ``model::link``) until ``owner``'s next update."""
-        owner.wrenches.append((body, np.asarray(force, float), np.asarray(torque, float)))
+        force, torque = np.asarray(force, float).reshape(3), np.asarray(torque, float).reshape(3)
+        what = f"wrench on '{body}':"
+        _check_plugin_numbers(_named("force", force), MAX_FORCE, "N", what)
+        _check_plugin_numbers(_named("torque", torque), MAX_TORQUE, "N m", what)
+        owner.wrenches.append((body, force, torque))
         self._push_forces()
 
     def _update_plugins(self, t: float) -> None:
@@ -488,7 +524,7 @@ class SimServer:
             slot.wrenches.clear()
             try:
                 slot.plugin.update(UpdateInfo(t, dt))
-            except Exception as error:  # noqa: BLE001 - a plugin's failure
+            except (Exception, SystemExit) as error:  # noqa: BLE001 - a plugin's failure
                 self._disable(slot, error, "update")
                 continue
             slot.last_update = t
@@ -514,7 +550,7 @@ class SimServer:
     def _close_plugin(self, slot: _PluginSlot) -> None:
         try:
             slot.plugin.close()
-        except Exception as error:  # noqa: BLE001 - a plugin's failure
+        except (Exception, SystemExit) as error:  # noqa: BLE001 - a plugin's failure
             _LOG.warning("plugin '%s' failed while closing: %s", slot.spec.name, error)
         if slot.node is not None:
             slot.node.shutdown()
@@ -556,11 +592,13 @@ class SimServer:
         """Apply ``effort`` on the joint named so in any model from ``start`` for ``duration`` s."""
 
         def work() -> None:
-            owner = self._joint_owner(joint_name)
+            owner = self.joint_owner(joint_name)
+            joint = joint_name.rpartition("::")[2]
+            if self.world.joint(owner, joint).num_velocities() != 1:  # a free body's own joint
+                raise SimulationError(f"joint '{joint_name}' is not a 1-dof joint")
             begin = max(start, self.world.time)
             # Gazebo applies it in every update with time <= start + duration (both ends).
             end = math.inf if duration < 0 else begin + duration + 0.5 * self.world.time_step
-            joint = joint_name.rpartition("::")[2]
             self._api_jobs.append(_Job(begin, end, joint=(owner, joint), effort=float(effort)))
             self._push_forces()
 
@@ -594,7 +632,12 @@ class SimServer:
 
         return scoped(instance_name, body.name())
 
-    def _joint_owner(self, joint_name: str) -> str:
+    def joint_owner(self, joint_name: str) -> str:
+        """The model that has the joint ``joint_name`` (``model::joint`` or a bare name).
+
+        Raises:
+            SimulationError: No model has it.
+        """
         plant = self.world.plant
         model, _, joint = joint_name.rpartition("::")
         names = [model] if model else [n for n in self.world.model_names() if n != "ground_plane"]
@@ -633,6 +676,46 @@ class SimServer:
                 resolved.append((self.world.body(scoped), force, torque))
         self.world.set_body_wrenches(resolved)
         self.world.set_joint_efforts({k: v for k, v in efforts.items() if k[0] in names})
+
+
+def _named(name: str, vector: np.ndarray) -> list[tuple[str, float]]:
+    return [(f"{name}.{axis}", float(v)) for axis, v in zip("xyz", vector, strict=True)]
+
+
+def _check_plugin_numbers(
+    values: Iterable[tuple[str, float]], limit: float, unit: str, what: str = ""
+) -> None:
+    """Raise (into the plugin, which is then disabled) for a NaN, infinite or huge value."""
+    reason = out_of_bounds(values, limit, unit)
+    if reason is not None:
+        raise SimulationError(f"{what + ' ' if what else ''}{reason}")
+
+
+def _first_sentence(text: str) -> str:
+    """Drake's failure messages go on with advice for C++ users: their first sentence, one line."""
+    line = " ".join(text.split())
+    head, dot, _ = line.partition(". ")
+    return head + dot.strip()
+
+
+def _failed_model(world: Any, why: str) -> str | None:
+    """The model that failed: the first with a NaN or infinite state, else one whose body
+    Drake's message names (None: neither)."""
+    try:
+        plant = world.plant
+        context = plant.GetMyContextFromRoot(world.context)
+        names = [n for n in world.model_names() if n != GROUND_NAME]
+        for name in names:
+            state = plant.GetPositionsAndVelocities(context, world.model_instance(name))
+            if not np.all(np.isfinite(state)):
+                return str(name)
+        for name in names:
+            for index in plant.GetBodyIndices(world.model_instance(name)):
+                if f"body {plant.get_body(index).name()} " in why + " ":
+                    return str(name)
+    except (RuntimeError, SimulationError):  # a world Drake could not even evaluate
+        return None
+    return None
 
 
 def _belongs(job: _Job, model: str) -> bool:
