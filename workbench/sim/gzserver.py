@@ -46,6 +46,14 @@ class ServerOptions:
     allow_spawn_plugins: bool = False
 
 
+#: Latest ``--until`` time, simulated s (about 116 days; ``inf`` would never end).
+MAX_UNTIL_SECONDS = 10_000_000.0
+#: Largest ``--real-time-factor`` (faster than any machine steps a world).
+MAX_REAL_TIME_FACTOR = 1_000_000.0
+#: Largest ``--seed`` (numpy's seeds are 32-bit).
+MAX_SEED = 2**32 - 1
+
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """The options of ``workbench sim`` (and of the ``gazebo_ros gzserver`` node)."""
     parser.add_argument(
@@ -114,11 +122,18 @@ def check_options(options: ServerOptions) -> Any:
     """
     from workbench.sim.world_file import load_world
 
-    if options.until is not None and not (options.until >= 0):
-        raise SimulationError(f"--until must be a time >= 0, got {options.until}")
+    until = options.until
+    if until is not None and not (0 <= until <= MAX_UNTIL_SECONDS):
+        raise SimulationError(
+            f"--until must be a simulated time from 0 to {MAX_UNTIL_SECONDS:,.0f} s, got {until:g}"
+        )
     rtf = options.real_time_factor
-    if rtf is not None and not (rtf > 0):
-        raise SimulationError(f"--real-time-factor must be positive, got {rtf}")
+    if rtf is not None and not (0 < rtf <= MAX_REAL_TIME_FACTOR):
+        raise SimulationError(
+            f"--real-time-factor must be above 0 and at most {MAX_REAL_TIME_FACTOR:g}, got {rtf:g}"
+        )
+    if not 0 <= options.seed <= MAX_SEED:
+        raise SimulationError(f"--seed must be from 0 to {MAX_SEED} (2^32 - 1), got {options.seed}")
     step = options.max_step_size
     if step is not None and not (0 < step <= 0.1):
         raise SimulationError(f"--max-step-size must be in (0, 0.1] s, got {step}")
