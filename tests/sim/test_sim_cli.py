@@ -231,7 +231,7 @@ def test_sim_runs_a_world_until_a_time_and_writes_its_recording(tmp_path, run_cl
     [
         (["sim", "nowhere"], "unknown world 'nowhere'"),
         (["sim", "bad.world"], "not an XML world file"),
-        (["sim", "--real-time-factor", "0"], "--real-time-factor must be positive"),
+        (["sim", "--real-time-factor", "0"], "--real-time-factor must be above 0"),
     ],
 )
 def test_bad_worlds_and_options_are_one_line_errors(tmp_path, run_cli, args, message):
