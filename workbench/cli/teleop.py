@@ -70,6 +70,7 @@ def twist(*, topic: str = "cmd_vel", speed: float | None = None, turn: float | N
 
 def _drive(name: str, loop, topic: str, params: dict[str, float | None], *, raw: bool) -> int:
     from workbench.bus import Node
+    from workbench.bus.names import check_name
     from workbench.errors import WorkbenchError
     from workbench.teleop.terminal import RawTerminal
 
@@ -80,6 +81,7 @@ def _drive(name: str, loop, topic: str, params: dict[str, float | None], *, raw:
                 f"{option} must be a finite speed within ±{MAX_SPEED:g}, got {value:g}",
                 hint="m/s for linear speeds, rad/s for turning",
             )
+    check_name(topic, "topic name")  # before joining: a typo must not replace a running teleop
     terminal = RawTerminal(raw=raw)  # fails early, before joining the bus, without a terminal
     node = Node(name)
     for key, value in params.items():
