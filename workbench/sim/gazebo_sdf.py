@@ -66,8 +66,18 @@ def sim_model_from_element(
     version: str | None = None,
 ) -> SimModel:
     """:func:`sim_model_from_sdf` for a parsed ``<model>`` element (changed in place)."""
+    from workbench.model.drake_guard import check_sdf_element
+    from workbench.sim.bounds import check_model_name
+
+    if name:
+        check_model_name(name, "model name")
     where = f"{source}:{model_element.sourceline}" if model_element.sourceline else source
     path = Path(source) if base_dir is not None and Path(source).is_file() else None
+    try:
+        check_sdf_element(model_element, path)
+    except ModelError as error:
+        message = error.message if error.path is not None else f"{source}: {error.message}"
+        raise SimulationError(message, path=error.path, line=error.line, hint=error.hint) from None
     try:
         nesting = flatten_model(model_element, path=path, version=version)
     except ModelError as error:

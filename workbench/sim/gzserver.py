@@ -111,8 +111,10 @@ def build_server(options: ServerOptions, bus: Any = None) -> tuple[Any, Any, Any
     if rtf is not None and not (rtf > 0):
         raise SimulationError(f"--real-time-factor must be positive, got {rtf}")
     step = options.max_step_size
-    if step is not None and not (0 < step <= 0.1):
-        raise SimulationError(f"--max-step-size must be in (0, 0.1] s, got {step}")
+    if step is not None:
+        from workbench.sim.bounds import check_step_size
+
+        check_step_size(step, "--max-step-size")
     random.seed(options.seed)
     np.random.seed(options.seed)
     world_file = load_world(options.world)

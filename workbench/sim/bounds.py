@@ -1,0 +1,133 @@
+"""Bounds on the work a world file or a spawn request may ask of the simulator.
+
+A world or a model sent over the bus is input like a model file: it may not make
+the server build or step for ever, nor hand Drake a name it crashes on. The bounds
+are far above any world of the lab (the TurtleBot3 house has 4 models and 36
+links, Clearpath's playpen 72 models; gazebo_models' largest model has 100 links)
+and are listed in the README under "Limits on input". Past them the world or the
+request is refused in one line before anything is built: a 300-link chain already
+simulates 5 times slower than real time on one core, and each spawn rebuilds the
+whole plant.
+"""
+
+from __future__ import annotations
+
+import functools
+from typing import Any
+
+from workbench.errors import SimulationError
+
+#: Most models in one world (world file and spawned, the ground not counted).
+MAX_WORLD_MODELS = 500
+#: Most links in one world, all models together (also what one spawn may bring).
+MAX_WORLD_LINKS = 1_000
+#: Most plugins a world file may load (world, model and sensor plugins together).
+MAX_WORLD_PLUGINS = 100
+#: Smallest and largest physics step, s: 10 us is ten times below the finest step of
+#: Gazebo's own worlds (0.1 ms), and 0.3 s of simulation is still 30,000 steps.
+MIN_STEP_SIZE, MAX_STEP_SIZE = 1e-5, 0.1
+#: Longest ``robot_namespace`` of a spawn request, characters.
+MAX_NAMESPACE_LENGTH = 256
+
+_README = "see 'Limits on input' in the README"
+
+
+def check_step_size(value: float, what: str) -> None:
+    """Refuse a physics step outside [:data:`MIN_STEP_SIZE`, :data:`MAX_STEP_SIZE`] s.
+
+    Raises:
+        SimulationError: ``<what> must be in [1e-05, 0.1] s, got ...`` (no file named:
+            the caller adds it).
+    """
+    if not MIN_STEP_SIZE <= value <= MAX_STEP_SIZE:
+        raise SimulationError(
+            f"{what} must be in [{MIN_STEP_SIZE:g}, {MAX_STEP_SIZE:g}] s, got {value:g}",
+            hint="Gazebo's worlds use 0.001 s",
+        )
+
+
+@functools.lru_cache(maxsize=1024)
+def model_links(text: str) -> int:
+    """How many links a :class:`~workbench.sim.model_spec.SimModel`'s text holds."""
+    from lxml import etree
+
+    root = etree.fromstring(text.encode())
+    return sum(1 for element in root.iter("link") if element.getparent().tag in ("robot", "model"))
+
+
+def check_room(models: int, links: int, adding: int, name: str) -> None:
+    """Refuse a model of ``adding`` links when the world has ``models`` models and ``links`` links.
+
+    Raises:
+        SimulationError: The world would hold more than :data:`MAX_WORLD_MODELS` models
+            or :data:`MAX_WORLD_LINKS` links.
+    """
+    from workbench.model.limits import shown_name
+
+    if models + 1 > MAX_WORLD_MODELS:
+        raise SimulationError(
+            f"model '{shown_name(name)}': the world already has {models:,} models; the "
+            f"simulator holds at most {MAX_WORLD_MODELS:,}",
+            hint="delete a model first; " + _README,
+        )
+    if links + adding > MAX_WORLD_LINKS:
+        have = f"the world has {links:,} links, " if links else ""
+        raise SimulationError(
+            f"model '{shown_name(name)}' has {adding:,} links; {have}the simulator holds at most "
+            f"{MAX_WORLD_LINKS:,} links",
+            hint="simulate fewer links; " + _README,
+        )
+
+
+def check_model_name(name: str, what: str) -> None:
+    """Refuse a model name Drake cannot take (too long, control characters, empty).
+
+    Raises:
+        SimulationError: ``<what> '<name...>' has 100,000 characters; at most 256``.
+    """
+    from workbench.model.limits import name_problem, shown_name
+
+    problem = name_problem(name)
+    if problem is not None:
+        raise SimulationError(
+            f"{what} '{shown_name(name)}' {problem}",
+            hint="give it a short name of printable characters",
+        )
+
+
+def namespace_problem(namespace: str) -> str | None:
+    """Why ``namespace`` cannot be a spawn request's ``robot_namespace``, or None."""
+    if len(namespace) > MAX_NAMESPACE_LENGTH:
+        return f"has {len(namespace):,} characters; at most {MAX_NAMESPACE_LENGTH}"
+    bad = next((c for c in namespace if not (c.isalnum() or c in "_/~")), None)
+    if bad is not None:
+        return f"contains {bad!r}, which a ROS name cannot hold"
+    return None
+
+
+def world_links(world: Any) -> tuple[int, int]:
+    """``(models, links)`` of the models a :class:`~workbench.sim.World` holds now."""
+    counts = [model_links(placed.model.text) for placed in world.models.values()]
+    robots = [len(robot.links) for robot in world.robots.values()]
+    return len(counts) + len(robots), sum(counts) + sum(robots)
+
+
+def spawn_request_problem(name: str, namespace: str, xml: str) -> str | None:
+    """Why a spawn request must be refused before its model is read, or None.
+
+    The name and namespace go to Drake and into bus names; a name of 100,000
+    characters crashes Drake, so they are checked before anything else (and the
+    messages never quote them whole).
+    """
+    from workbench.model.limits import MAX_MODEL_BYTES, name_problem, shown_name
+
+    if name:
+        problem = name_problem(name)
+        if problem is not None:
+            return f"model name '{shown_name(name)}' {problem}"
+    problem = namespace_problem(namespace)
+    if problem is not None:
+        return f"robot_namespace '{shown_name(namespace)}' {problem}"
+    if len(xml) > MAX_MODEL_BYTES:
+        return f"model_xml has {len(xml):,} characters; at most {MAX_MODEL_BYTES:,}"
+    return None
