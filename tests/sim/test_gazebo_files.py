@@ -190,6 +190,11 @@ def test_model_uris_resolve_in_gazebo_model_path_with_include_overrides(tmp_path
         ),
         (
             "<sdf><world name='w'><model name='m'><pose>0 0 nan 0 0 0</pose><link name='l'/></model></world></sdf>",
+            "model 'm' <pose>: 0 0 nan 0 0 0 holds nan, which is not a finite number",
+        ),
+        (
+            "<sdf><world name='w'><model name='m'><pose>0 0 0 0 0 0 0</pose><link name='l'/>"
+            "</model></world></sdf>",
             "<pose> must be six finite numbers",
         ),
         ("<sdf><world name='w'><model name='empty'/></world></sdf>", "model 'empty' has no <link>"),

@@ -174,7 +174,13 @@ def _check_size(world: etree._Element, path: Path) -> None:
     counted in the file before anything is loaded (an included model's are counted after)."""
     from workbench.sim.bounds import MAX_WORLD_LINKS, MAX_WORLD_MODELS, MAX_WORLD_PLUGINS
 
-    entries = [e for e in world if isinstance(e.tag, str) and e.tag in ("model", "include")]
+    built_in = ("model://ground_plane", "model://sun")
+    entries = [
+        e
+        for e in world
+        if e.tag == "model"
+        or (e.tag == "include" and (e.findtext("uri") or "").strip() not in built_in)
+    ]
     if len(entries) > MAX_WORLD_MODELS:
         raise SimulationError(
             f"the world has {len(entries):,} models and includes; the simulator holds at most "
