@@ -123,7 +123,11 @@ def config_file(folder: Path) -> Path:
     try:
         root = etree.parse(str(config)).getroot()
     except (OSError, etree.XMLSyntaxError) as error:
-        raise ModelError(f"{config}: cannot read model.config: {error}") from None
+        from workbench.model.limits import xml_error_text
+
+        raise ModelError(
+            f"{config}: cannot read model.config: {xml_error_text(str(error))}"
+        ) from None
     entries = root.findall("sdf")
     if not entries:
         raise ModelError(f"{config}: no <sdf> element names the model file")
