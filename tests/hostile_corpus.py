@@ -129,6 +129,12 @@ def _world_3000_links(tmp: Path) -> str:
     return _world(tmp, _box_model("row", links=3_000))
 
 
+def _world_3000_static_links(tmp: Path) -> str:
+    """3,000 wall links in one static model (a traced map of the Intel lab has 1,606)."""
+    walls = _box_model("walls", links=3_000).replace("<pose>", "<static>true</static><pose>", 1)
+    return _world(tmp, walls)
+
+
 def _world_500_plugins(tmp: Path) -> str:
     plugins = "".join(
         f'<plugin name="p{i}" filename="libgazebo_ros_p3d.so"><bodyName>link0</bodyName>'
@@ -167,6 +173,7 @@ GENERATORS: dict[str, Callable[[Path], str]] = {
     "world_2000_models": _world_2000_models,
     "world_3000_links": _world_3000_links,
     "world_500_plugins": _world_500_plugins,
+    "world_3000_static_links": _world_3000_static_links,
     "world_includes_1200_links": _world_includes_1200_links,
 }
 

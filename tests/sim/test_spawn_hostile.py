@@ -80,7 +80,7 @@ HOSTILE = [
         "1,500-link chain",
         "spawn_urdf_model",
         {"model_name": "chain", "model_xml": _chain(1_500)},
-        "SpawnModel: Failure - the model has 1,500 links; the simulator holds at most 500",
+        "SpawnModel: Failure - the model has 1,500 links; a spawned model has at most 500",
     ),
 ]
 

@@ -301,7 +301,7 @@ def _check_sdf_plane(plane: Any, path: Path | None) -> None:
             "give the direction the plane faces, e.g. 0 0 1",
         )
     size = plane.find("size")
-    values = _numbers(size) if size is not None else []
+    values = [v for v in _numbers(size) if math.isfinite(v)] if size is not None else []
     if any(abs(value) > MAX_SHAPE_SIZE for value in values):
         raise _fail(
             _too_big(_label(size, SDF_NAMED), "size", max(map(abs, values))),

@@ -137,6 +137,13 @@ def config_file(folder: Path) -> Path:
         return tuple(int(p) for p in text.split(".") if p.isdigit())
 
     best = max(entries, key=version)
+    from workbench.model.limits import shown_name, uri_problem
+
+    problem = uri_problem((best.text or "").strip())
+    if problem is not None:
+        raise ModelError(
+            f"{config}:{best.sourceline}: <sdf> '{shown_name((best.text or '').strip())}' {problem}"
+        )
     path = folder / (best.text or "").strip()
     if not path.is_file():
         raise ModelError(

@@ -20,8 +20,12 @@ from workbench.errors import SimulationError
 
 #: Most models in one world (world file and spawned, the ground not counted).
 MAX_WORLD_MODELS = 200
-#: Most links in one world, all models together (also what one spawn may bring).
+#: Most links of moving models in one world, all models together (and most links of one
+#: spawned model, static or not): each is a body the physics steps.
 MAX_WORLD_LINKS = 500
+#: Most links of static models in one world (walls a map image was traced into: the
+#: Intel lab's map gives 1,606); they are only collision geometry.
+MAX_STATIC_LINKS = 2_000
 #: Most plugins a world file may load (world, model and sensor plugins together).
 MAX_WORLD_PLUGINS = 100
 #: Smallest and largest physics step, s: 10 us is ten times below the finest step of
@@ -56,28 +60,43 @@ def model_links(text: str) -> int:
     return sum(1 for element in root.iter("link") if element.getparent().tag in ("robot", "model"))
 
 
-def check_room(models: int, links: int, adding: int, name: str) -> None:
-    """Refuse a model of ``adding`` links when the world has ``models`` models and ``links`` links.
+def check_room(load: tuple[int, int, int], adding: int, static: bool, name: str) -> None:
+    """Refuse a model of ``adding`` links in a world holding ``load`` (:func:`world_load`).
 
     Raises:
-        SimulationError: The world would hold more than :data:`MAX_WORLD_MODELS` models
-            or :data:`MAX_WORLD_LINKS` links.
+        SimulationError: The world would hold more than :data:`MAX_WORLD_MODELS` models,
+            :data:`MAX_WORLD_LINKS` moving or :data:`MAX_STATIC_LINKS` static links.
     """
     from workbench.model.limits import shown_name
 
+    models, moving, fixed = load
     if models + 1 > MAX_WORLD_MODELS:
         raise SimulationError(
             f"model '{shown_name(name)}': the world already has {models:,} models; the "
             f"simulator holds at most {MAX_WORLD_MODELS:,}",
             hint="delete a model first; " + _README,
         )
-    if links + adding > MAX_WORLD_LINKS:
-        have = f"the world has {links:,} links, " if links else ""
+    have, limit = (fixed, MAX_STATIC_LINKS) if static else (moving, MAX_WORLD_LINKS)
+    kind = "static" if static else "moving"
+    if have + adding > limit:
+        already = f"the world has {have:,}, " if have else ""
         raise SimulationError(
-            f"model '{shown_name(name)}' has {adding:,} links; {have}the simulator holds at most "
-            f"{MAX_WORLD_LINKS:,} links",
+            f"model '{shown_name(name)}' has {adding:,} links; {already}the simulator holds at "
+            f"most {limit:,} links of {kind} models",
             hint="simulate fewer links; " + _README,
         )
+
+
+def count_problem(moving: int, static: int, plugins: int) -> str | None:
+    """Why a world of these many moving links, static links and plugins is refused, or None."""
+    for count, limit, what in (
+        (moving, MAX_WORLD_LINKS, "links of moving models"),
+        (static, MAX_STATIC_LINKS, "links of static models"),
+        (plugins, MAX_WORLD_PLUGINS, "plugins"),
+    ):
+        if count > limit:
+            return f"{count:,} {what}; the simulator holds at most {limit:,}"
+    return None
 
 
 def check_model_name(name: str, what: str) -> None:
@@ -106,11 +125,15 @@ def namespace_problem(namespace: str) -> str | None:
     return None
 
 
-def world_links(world: Any) -> tuple[int, int]:
-    """``(models, links)`` of the models a :class:`~workbench.sim.World` holds now."""
-    counts = [model_links(placed.model.text) for placed in world.models.values()]
-    robots = [len(robot.links) for robot in world.robots.values()]
-    return len(counts) + len(robots), sum(counts) + sum(robots)
+def world_load(world: Any) -> tuple[int, int, int]:
+    """``(models, moving links, static links)`` of what a :class:`~workbench.sim.World` holds."""
+    moving = static = 0
+    for placed in world.models.values():
+        links = model_links(placed.model.text)
+        static += links if placed.model.static else 0
+        moving += 0 if placed.model.static else links
+    moving += sum(len(robot.links) for robot in world.robots.values())
+    return len(world.models) + len(world.robots), moving, static
 
 
 def spawn_request_problem(name: str, namespace: str, xml: str) -> str | None:
@@ -131,10 +154,12 @@ def spawn_request_problem(name: str, namespace: str, xml: str) -> str | None:
         return f"robot_namespace '{shown_name(namespace)}' {problem}"
     if len(xml) > MAX_MODEL_BYTES:
         return f"model_xml has {len(xml):,} characters; at most {MAX_MODEL_BYTES:,}"
-    # counted in the text before it is parsed; World.add_model counts exactly
+    # counted in the text before it is parsed (World.add_model counts exactly); a spawned
+    # model, static or not, is built while the world runs, so it brings at most as many
+    # links as a world's moving models may have
     links = len(_LINK.findall(xml))
     if links > MAX_WORLD_LINKS:
-        return f"the model has {links:,} links; the simulator holds at most {MAX_WORLD_LINKS:,}"
+        return f"the model has {links:,} links; a spawned model has at most {MAX_WORLD_LINKS:,}"
     return None
 
 

@@ -301,10 +301,13 @@ def _isotropic_friction(model_element: Any) -> None:
         if ode.getparent() is None or ode.getparent().tag != "friction":
             continue
         given = [ode.find(key) for key in ("mu", "mu2")]
-        values = [_vector(e, (), count=1) for e in given if e is not None]
-        if not values or not all(values):
+        try:
+            values = [float((e.text or "").strip()) for e in given if e is not None]
+        except ValueError:
             continue  # a malformed number: Drake names it
-        mean = float(np.mean([v[0] for v in values]))
+        if not values or not all(np.isfinite(values)):
+            continue
+        mean = float(np.mean(values))
         for key, element in zip(("mu", "mu2"), given, strict=True):
             if element is None:
                 element = etree.SubElement(ode, key)

@@ -172,7 +172,7 @@ def load_world(name_or_path: str | os.PathLike[str]) -> WorldFile:
 def _check_size(world: etree._Element, path: Path) -> None:
     """Refuse a world that asks for more models, links or plugins than the simulator holds,
     counted in the file before anything is loaded (an included model's are counted after)."""
-    from workbench.sim.bounds import MAX_WORLD_LINKS, MAX_WORLD_MODELS, MAX_WORLD_PLUGINS
+    from workbench.sim.bounds import MAX_WORLD_MODELS, count_problem
 
     built_in = ("model://ground_plane", "model://sun")
     entries = [
@@ -189,38 +189,37 @@ def _check_size(world: etree._Element, path: Path) -> None:
             line=entries[MAX_WORLD_MODELS].sourceline,
             hint="see 'Limits on input' in the README",
         )
-    for tag, limit, what in (
-        ("link", MAX_WORLD_LINKS, "links"),
-        ("plugin", MAX_WORLD_PLUGINS, "plugins"),
-    ):
-        found = [e for entry in world if entry.tag != "state" for e in entry.iter(tag)]
-        found += [e for e in world if e.tag == tag]
-        if len(found) > limit:
-            raise SimulationError(
-                f"the world has {len(found):,} {what}; the simulator holds at most {limit:,}",
-                path=path,
-                line=found[limit].sourceline,
-                hint="see 'Limits on input' in the README",
-            )
+    moving = static = 0
+    for model in (e for e in entries if e.tag == "model"):
+        links = sum(1 for _ in model.iter("link"))
+        if (model.findtext("static") or "").strip().lower() in ("1", "true"):
+            static += links
+        else:
+            moving += links
+    plugins = sum(1 for entry in world if entry.tag != "state" for _ in entry.iter("plugin"))
+    problem = count_problem(moving, static, plugins)
+    if problem is not None:
+        raise SimulationError(
+            f"the world has {problem}",
+            path=path,
+            hint="see 'Limits on input' in the README",
+        )
 
 
 def _check_totals(result: WorldFile, path: Path) -> None:
     """:func:`_check_size` once the included models are loaded (their links and plugins)."""
-    from workbench.sim.bounds import MAX_WORLD_LINKS, MAX_WORLD_PLUGINS, model_links
+    from workbench.sim.bounds import count_problem, model_links
 
-    links = sum(model_links(item.model.text) for item in result.models)
+    links = [(model_links(item.model.text), item.model.static) for item in result.models]
     plugins = len(result.plugins) + sum(len(item.model.plugins) for item in result.models)
-    for count, limit, what in (
-        (links, MAX_WORLD_LINKS, "links"),
-        (plugins, MAX_WORLD_PLUGINS, "plugins"),
-    ):
-        if count > limit:
-            raise SimulationError(
-                f"the world and the models it includes have {count:,} {what}; the simulator "
-                f"holds at most {limit:,}",
-                path=path,
-                hint="see 'Limits on input' in the README",
-            )
+    moving = sum(count for count, static in links if not static)
+    problem = count_problem(moving, sum(count for count, static in links if static), plugins)
+    if problem is not None:
+        raise SimulationError(
+            f"the world and the models it includes have {problem}",
+            path=path,
+            hint="see 'Limits on input' in the README",
+        )
 
 
 def world_model(element: etree._Element, path: Path, version: str | None) -> SimModel:
@@ -347,6 +346,8 @@ def _physics(world: etree._Element, path: Path) -> Physics:
 def _numbers(element: etree._Element, count: int, path: Path) -> tuple[float, ...]:
     import math
 
+    from workbench.model.limits import shown_name
+
     text = (element.text or "").strip()
     try:
         values = tuple(float(v) for v in text.split())
@@ -354,7 +355,8 @@ def _numbers(element: etree._Element, count: int, path: Path) -> tuple[float, ..
         values = ()
     if len(values) != count or not all(math.isfinite(v) for v in values):
         raise SimulationError(
-            f"<{element.tag}> must be {count} finite number{'s' if count > 1 else ''}, got '{text}'",
+            f"<{element.tag}> must be {count} finite number{'s' if count > 1 else ''}, got "
+            f"'{shown_name(text, 60)}'",
             path=path,
             line=element.sourceline,
         )
