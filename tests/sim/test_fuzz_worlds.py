@@ -1,7 +1,8 @@
 """Seeded fuzzing of world files, their includes and model folders: a world or one line.
 
 A small world (the ground, a two-link model written inline, physics settings and
-an ``<include>`` of a model folder with its ``model.config`` and ``model.sdf``) is
+two ``<include>``s of a model folder, ``model.config`` and ``model.sdf``, whose model
+includes another folder's on a joint) is
 mutated: numbers made NaN, infinite, huge, tiny or garbage; names and include URIs
 made long, multi-line or path-like; elements deleted, duplicated (up to past the
 simulator's bounds) and moved; bytes cut, flipped and spliced. Each mutant is loaded
@@ -94,11 +95,33 @@ CRATE = """<?xml version="1.0"?>
         <surface><friction><ode><mu>0.8</mu></ode></friction></surface></collision>
       <visual name="v"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></visual>
     </link>
+    <include><uri>model://wheel</uri><name>wheel</name><pose>0.15 0 0 1.5708 0 0</pose>
+    </include>
+    <joint name="axle" type="revolute"><parent>body</parent><child>wheel::link</child>
+      <axis><xyz>0 0 1</xyz></axis></joint>
+  </model>
+</sdf>
+"""
+
+WHEEL_CONFIG = """<?xml version="1.0"?>
+<model><name>wheel</name><sdf version="1.6">model.sdf</sdf></model>
+"""
+
+WHEEL = """<?xml version="1.0"?>
+<sdf version="1.6">
+  <model name="wheel">
+    <link name="link">
+      <inertial><mass>0.2</mass><inertia><ixx>0.001</ixx><iyy>0.001</iyy><izz>0.001</izz>
+        </inertia></inertial>
+      <collision name="c"><geometry><cylinder><radius>0.05</radius><length>0.02</length>
+        </cylinder></geometry></collision>
+    </link>
   </model>
 </sdf>
 """
 
 FILES = {"fuzz.world": WORLD, "crate/model.config": CRATE_CONFIG, "crate/model.sdf": CRATE}
+FILES |= {"wheel/model.config": WHEEL_CONFIG, "wheel/model.sdf": WHEEL}
 
 NUMBERS = ["nan", "inf", "-inf", "1e308", "-1e308", "1e-300", "0", "-1", "1e400", "abc"]
 NUMBERS += ["", "1 2", "0 0 0", "0 0 0 0 0 0", "9" * 400, "1e6", "1000001"]
@@ -164,7 +187,7 @@ def _mutant(folder: Path, rng: random.Random, mutator: Mutator) -> str:
     for name, text in FILES.items():
         (folder / name).parent.mkdir(parents=True, exist_ok=True)
         (folder / name).write_text(text)
-    name = rng.choice(["fuzz.world", "fuzz.world", "crate/model.sdf", "crate/model.config"])
+    name = rng.choice(["fuzz.world", "fuzz.world", *FILES])
     path = folder / name
     if rng.random() < 0.2:
         path.write_bytes(mutator.mutate(path.read_bytes()))

@@ -71,8 +71,13 @@ class ModelInputError(ModelError):
 
 def _not_finite(label: str, shown: str, token: str) -> str:
     if shown.strip() == token:
-        return f"{label}: {shown.strip()} is not a finite number"
-    return f"{label}: {shown} holds {token}, which is not a finite number"
+        return f"{label}: {_cut(token)} is not a finite number"
+    return f"{label}: {_cut(shown)} holds {_cut(token)}, which is not a finite number"
+
+
+def _cut(text: str, length: int = 60) -> str:
+    """``text`` as a message shows it: at most ``length`` characters."""
+    return text if len(text) <= length else text[: length - 3] + "..."
 
 
 def _non_finite(text: str) -> str | None:

@@ -12,7 +12,7 @@ of 200 boxes takes about 7 s to build (each spawn rebuilds the whole plant).
 
 from __future__ import annotations
 
-import functools
+import hashlib
 import re
 from typing import Any
 
@@ -51,12 +51,33 @@ def check_step_size(value: float, what: str) -> None:
         )
 
 
-@functools.lru_cache(maxsize=1024)
 def model_links(text: str) -> int:
-    """How many links a :class:`~workbench.sim.model_spec.SimModel`'s text holds."""
+    """How many links a :class:`~workbench.sim.model_spec.SimModel`'s text holds.
+
+    Counted once per text: every spawn counts every model of the world. The cache is
+    keyed by digest, so that it keeps no deleted model's text alive.
+    """
+    digest = hashlib.sha1(text.encode(), usedforsecurity=False).digest()
+    count = _LINK_COUNTS.get(digest)
+    if count is None:
+        if len(_LINK_COUNTS) >= 4096:
+            _LINK_COUNTS.clear()
+        count = _LINK_COUNTS[digest] = _count_links(text)
+    return count
+
+
+_LINK_COUNTS: dict[bytes, int] = {}
+
+
+def _count_links(text: str) -> int:
     from lxml import etree
 
-    root = etree.fromstring(text.encode())
+    # the text is what Drake parses, which forgives what libsdformat forgives (a "--" in a
+    # comment)
+    parser = etree.XMLParser(recover=True, resolve_entities=False, no_network=True, huge_tree=True)
+    root = etree.fromstring(text.encode(), parser)
+    if root is None:
+        return 0
     return sum(1 for element in root.iter("link") if element.getparent().tag in ("robot", "model"))
 
 

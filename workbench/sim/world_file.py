@@ -292,7 +292,8 @@ def _include(element: etree._Element, result: WorldFile, path: Path) -> None:
         try:
             check_model_name(new_name, "<include> <name>")
         except SimulationError as error:
-            line = element.find("name").sourceline  # type: ignore[union-attr]
+            name_element = element.find("name")
+            line = name_element.sourceline if name_element is not None else element.sourceline
             raise SimulationError(error.message, path=path, line=line, hint=error.hint) from None
     model = _read_model(file, new_name)
     for plugin in element.findall("plugin"):
