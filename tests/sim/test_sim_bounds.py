@@ -65,9 +65,9 @@ def test_the_shipped_worlds_are_far_inside_the_bounds():
         assert sum(model_links(item.model.text) for item in world.models) <= 50
 
 
-@pytest.mark.parametrize("step", [1e-300, 0.0, -0.001, 0.5, float("nan"), float("inf")])
-def test_physics_steps_outside_10_us_to_100_ms_are_refused(step):
-    with pytest.raises(SimulationError, match=r"must be in \[1e-05, 0.1\] s"):
+@pytest.mark.parametrize("step", [1e-300, 1e-5, 0.0, -0.001, 0.5, float("nan"), float("inf")])
+def test_physics_steps_outside_100_us_to_100_ms_are_refused(step):
+    with pytest.raises(SimulationError, match=r"must be in \[0.0001, 0.1\] s"):
         check_step_size(step, "<max_step_size>")
 
 
@@ -83,3 +83,8 @@ def test_spawn_requests_are_checked_before_their_model_is_read():
     assert spawn_request_problem("c", "", chain) == (
         f"the model has {MAX_WORLD_LINKS + 1} links; a spawned model has at most {MAX_WORLD_LINKS}"
     )
+
+
+@pytest.mark.parametrize("step", [1e-4, 0.001, 0.008, 0.1])
+def test_the_steps_worlds_use_are_accepted(step):
+    check_step_size(step, "<max_step_size>")
