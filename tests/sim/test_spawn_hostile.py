@@ -163,6 +163,12 @@ def test_hostile_spawn_requests_are_refused_and_the_server_runs_on(tmp_path, fre
             )
             assert sound.success, sound.status_message
             _steps_on(node, process, log)
+            # near the bound: accepted, built while the server runs, and it steps on
+            near = _spawn(
+                node, "spawn_urdf_model", {"model_name": "chain", "model_xml": _chain(300)}
+            )
+            assert near.success, near.status_message
+            _steps_on(node, process, log)
         finally:
             bus.shutdown()
     assert "Segmentation fault" not in log.read_text() and "Traceback" not in log.read_text()

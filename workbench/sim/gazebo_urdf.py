@@ -88,7 +88,8 @@ def sim_model_from_urdf(
     where = source or str(description.path)
     try:
         if description.document is not None:
-            in_file = description.path.is_file() and not description.expanded
+            # lines are the file's only for a file read as it is (not text, not xacro output)
+            in_file = source in (None, str(description.path)) and not description.expanded
             check_urdf_element(description.document.root, description.path if in_file else None)
         text = description.prepared_text(name)
         root_link = description.root_link()
