@@ -79,7 +79,7 @@ def _directory(tmp: Path) -> str:
     return str(path)
 
 
-def _world(tmp: Path, body: str) -> str:
+def _plugin_world(tmp: Path, body: str) -> str:
     path = tmp / "world" / "hostile.world"
     path.parent.mkdir()
     path.write_text(f'<sdf version="1.6"><world name="hostile">{body}</world></sdf>')
@@ -89,21 +89,21 @@ def _world(tmp: Path, body: str) -> str:
 def _plugin_absolute_world(tmp: Path) -> str:
     """A world whose plugin is a file outside its folder, named by absolute path."""
     plugin = HOSTILE / "plugins" / "outside" / "pwned_plugin.py"
-    return _world(tmp, f'<plugin name="pwned" filename="{plugin}"/>')
+    return _plugin_world(tmp, f'<plugin name="pwned" filename="{plugin}"/>')
 
 
 def _include_absolute_world(tmp: Path) -> str:
     """A world including a model file outside its folder by absolute path."""
     model = HOSTILE / "plugins" / "outside" / "pwned_model" / "model.sdf"
-    return _world(tmp, f"<include><uri>{model}</uri></include>")
+    return _plugin_world(tmp, f"<include><uri>{model}</uri></include>")
 
 
 def _plugin_long_name_world(tmp: Path) -> str:
-    return _world(tmp, f'<plugin name="{"p" * 5000}" filename="model_push.py"/>')
+    return _plugin_world(tmp, f'<plugin name="{"p" * 5000}" filename="model_push.py"/>')
 
 
 def _plugin_long_filename_world(tmp: Path) -> str:
-    return _world(tmp, f'<plugin name="long" filename="{"f" * 5000}.py"/>')
+    return _plugin_world(tmp, f'<plugin name="long" filename="{"f" * 5000}.py"/>')
 
 
 def _deep_json_plan(tmp: Path) -> str:
@@ -137,6 +137,86 @@ def _plain_file(tmp: Path) -> str:
     return str(path)
 
 
+def _world(tmp: Path, body: str, name: str = "input.world") -> str:
+    path = tmp / name
+    path.write_text(
+        '<?xml version="1.0"?>\n<sdf version="1.6">\n<world name="default">\n'
+        f"<include><uri>model://ground_plane</uri></include>\n{body}\n</world>\n</sdf>\n"
+    )
+    return str(path)
+
+
+def _box_model(name: str, x: float = 0.0, links: int = 1, plugin: str = "") -> str:
+    """An SDF model of ``links`` 10 cm boxes in a row, ``x`` m along the world's x axis."""
+    body = "".join(
+        f'<link name="link{i}"><pose>{0.2 * i} 0 0.05 0 0 0</pose><inertial><mass>1</mass>'
+        "<inertia><ixx>0.002</ixx><iyy>0.002</iyy><izz>0.002</izz></inertia></inertial>"
+        '<collision name="c"><geometry><box><size>0.1 0.1 0.1</size></box></geometry>'
+        "</collision></link>"
+        for i in range(links)
+    )
+    return f'<model name="{name}"><pose>{x} 0 0 0 0 0</pose>{plugin}{body}</model>\n'
+
+
+def _world_long_model_name(tmp: Path) -> str:
+    """A world whose one model is named with 45,000 characters (Drake crashed on it)."""
+    return _world(tmp, _box_model("m" * 45_000))
+
+
+def _world_long_include_name(tmp: Path) -> str:
+    """A world including a model folder under a ``<name>`` of 5,000 characters."""
+    folder = tmp / "crate"
+    folder.mkdir()
+    (folder / "model.config").write_text(
+        '<?xml version="1.0"?>\n<model><name>crate</name><sdf version="1.6">model.sdf</sdf></model>\n'
+    )
+    (folder / "model.sdf").write_text(f'<sdf version="1.6">{_box_model("crate")}</sdf>\n')
+    return _world(tmp, f"<include><uri>crate</uri><name>{'n' * 5_000}</name></include>")
+
+
+def _world_long_include_uri(tmp: Path) -> str:
+    """A world including ``model://`` of a 5,000-character model name."""
+    return _world(tmp, f"<include><uri>model://{'n' * 5_000}</uri></include>")
+
+
+def _world_2000_models(tmp: Path) -> str:
+    return _world(tmp, "".join(_box_model(f"box{i}", i * 0.5) for i in range(2_000)))
+
+
+def _world_3000_links(tmp: Path) -> str:
+    return _world(tmp, _box_model("row", links=3_000))
+
+
+def _world_3000_static_links(tmp: Path) -> str:
+    """3,000 wall links in one static model (a traced map of the Intel lab has 1,606)."""
+    walls = _box_model("walls", links=3_000).replace("<pose>", "<static>true</static><pose>", 1)
+    return _world(tmp, walls)
+
+
+def _world_500_plugins(tmp: Path) -> str:
+    plugins = "".join(
+        f'<plugin name="p{i}" filename="libgazebo_ros_p3d.so"><bodyName>link0</bodyName>'
+        f"<topicName>odom{i}</topicName></plugin>"
+        for i in range(500)
+    )
+    return _world(tmp, _box_model("box", plugin=plugins))
+
+
+def _world_includes_1200_links(tmp: Path) -> str:
+    """Three includes of one 400-link model folder: each is within bounds, together not."""
+    folder = tmp / "row"
+    folder.mkdir()
+    (folder / "model.config").write_text(
+        '<?xml version="1.0"?>\n<model><name>row</name><sdf version="1.6">model.sdf</sdf></model>\n'
+    )
+    (folder / "model.sdf").write_text(f'<sdf version="1.6">{_box_model("row", links=400)}</sdf>\n')
+    includes = "".join(
+        f"<include><uri>row</uri><name>row{i}</name><pose>0 {i} 0 0 0 0</pose></include>"
+        for i in range(3)
+    )
+    return _world(tmp, includes)
+
+
 #: ``make:`` name -> function(tmp folder) -> the ``{input}`` path.
 GENERATORS: dict[str, Callable[[Path], str]] = {
     "fifo": _fifo,
@@ -153,6 +233,14 @@ GENERATORS: dict[str, Callable[[Path], str]] = {
     "plan_of_20000_walls": _plan_of_20000_walls,
     "foreign_world_file": _foreign_world_file,
     "plain_file": _plain_file,
+    "world_long_model_name": _world_long_model_name,
+    "world_long_include_name": _world_long_include_name,
+    "world_long_include_uri": _world_long_include_uri,
+    "world_2000_models": _world_2000_models,
+    "world_3000_links": _world_3000_links,
+    "world_500_plugins": _world_500_plugins,
+    "world_3000_static_links": _world_3000_static_links,
+    "world_includes_1200_links": _world_includes_1200_links,
 }
 
 

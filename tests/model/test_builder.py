@@ -130,3 +130,25 @@ def test_bad_steps_are_one_line_errors_naming_the_element():
         robot.save("robot.xml")
     with pytest.raises(ModelError, match="align: link 'wheel' has no shapes"):
         robot.align("wheel", "base", x="max")
+
+
+def test_names_and_numbers_drake_cannot_take_are_refused_before_it_sees_them():
+    with pytest.raises(ModelError, match="model name 'mmm.*' has 100,000 characters; at most 256"):
+        ModelBuilder("m" * 100_000)
+    robot = ModelBuilder("bot")
+    with pytest.raises(ModelError, match="link name 'lll.*' has 5,000 characters"):
+        robot.add_link("l" * 5_000)
+    robot.add_link("base")
+    with pytest.raises(
+        ModelError, match=r"box sizes must be 3 positive numbers of at most 1e\+06 m"
+    ):
+        robot.add_box("base", (1e308, 1.0, 1.0))
+    with pytest.raises(ModelError, match="cylinder sizes"):
+        robot.add_cylinder("base", math.nan, 1.0)
+    robot.add_link("arm")
+    for bad in ({"effort": 1e400}, {"velocity": -1.0}, {"limits": (-math.inf, 0.0)}):
+        with pytest.raises(ModelError, match="joint 'j'"):
+            robot.add_joint("j", "revolute", "base", "arm", **bad)
+    assert robot.joints == []
+    robot.add_joint("j", "revolute", "base", "arm", effort=10.0, velocity=1.0)
+    assert robot.joints == ["j"]

@@ -190,6 +190,11 @@ def test_model_uris_resolve_in_gazebo_model_path_with_include_overrides(tmp_path
         ),
         (
             "<sdf><world name='w'><model name='m'><pose>0 0 nan 0 0 0</pose><link name='l'/></model></world></sdf>",
+            "model 'm' <pose>: 0 0 nan 0 0 0 holds nan, which is not a finite number",
+        ),
+        (
+            "<sdf><world name='w'><model name='m'><pose>0 0 0 0 0 0 0</pose><link name='l'/>"
+            "</model></world></sdf>",
             "<pose> must be six finite numbers",
         ),
         ("<sdf><world name='w'><model name='empty'/></world></sdf>", "model 'empty' has no <link>"),
@@ -218,3 +223,47 @@ def test_a_urdf_without_links_and_a_non_model_are_refused():
         sim_model_from_xml("<html/>", name="x", source="spawn request 'x'")
     with pytest.raises(SimulationError, match="neither URDF"):
         sim_model_from_xml("not xml at all", name="x", source="spawn request 'x'")
+
+
+def _friction(mu: str) -> str:
+    return (
+        '<sdf version="1.6"><model name="crate"><link name="body"><inertial><mass>1</mass>'
+        "<inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>"
+        '<collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry>'
+        f"<surface><friction><ode>{mu}</ode></friction></surface></collision>"
+        "</link></model></sdf>"
+    )
+
+
+@pytest.mark.parametrize(
+    ("mu", "expected"),
+    [("<mu>0.8</mu>", 0.8), ("<mu>0.4</mu><mu2>0.8</mu2>", 0.6), ("<mu2>1.5</mu2>", 1.5)],
+)
+def test_sdf_friction_becomes_the_mean_of_mu_and_mu2(mu, expected):
+    from lxml import etree
+
+    model = sim_model_from_sdf(_friction(mu), name=None, source="test")
+    ode = etree.fromstring(model.text.encode()).find(".//friction/ode")
+    assert float(ode.findtext("mu")) == pytest.approx(expected)
+    assert float(ode.findtext("mu2")) == pytest.approx(expected)
+    world = World(**SERVER_PHYSICS)
+    world.add_model(model)  # Drake refused <mu>0.8</mu> alone: dynamic (1) above static
+    world.build()
+
+
+def test_a_static_model_saved_with_nan_inertia_loads_as_gazebo_loads_it(tmp_path):
+    # worlds saved from Gazebo write <ixx>nan</ixx> for massless static walls
+    path = tmp_path / "walls.world"
+    path.write_text(
+        "<sdf version='1.6'><world name='w'><model name='walls'><static>1</static>"
+        "<link name='wall'><inertial><mass>0</mass><inertia><ixx>nan</ixx><iyy>nan</iyy>"
+        "<izz>nan</izz></inertia></inertial><collision name='c'><geometry><box>"
+        "<size>1 0.1 0.5</size></box></geometry></collision></link></model></world></sdf>"
+    )
+    world = World(**SERVER_PHYSICS)
+    for item in load_world(path).models:
+        world.add_model(item.model)
+    world.build()
+    path.write_text(path.read_text().replace("<static>1</static>", ""))
+    with pytest.raises(SimulationError, match=r"walls.world:1: link 'wall' .*nan is not a finite"):
+        load_world(path)

@@ -141,7 +141,15 @@ class ModelBuilder:
         ``inertia`` is ``(ixx, iyy, izz, ixy, ixz, iyz)`` about the centre of mass in
         the link frame; None computes it from the collision shapes.
         """
+        from workbench.model.limits import MAX_LINKS
+
         _check_name(name, "link")
+        if len(self._links) >= MAX_LINKS:
+            raise ModelError(
+                f"model '{self.name}' has {MAX_LINKS:,} links already; workbench loads at most "
+                f"{MAX_LINKS:,}",
+                hint="see 'Limits on input' in the README",
+            )
         if name in self._links:
             raise ModelError(f"link '{name}' already exists in model '{self.name}'")
         if mass is not None and not (math.isfinite(mass) and mass > 0):
@@ -205,9 +213,14 @@ class ModelBuilder:
         count: int,
     ) -> ModelBuilder:
         target = self._link(link)
-        if len(size) != count or not all(math.isfinite(s) and s > 0 for s in size):
+        from workbench.model.limits import MAX_SHAPE_SIZE
+
+        if len(size) != count or not all(
+            math.isfinite(s) and 0 < s <= MAX_SHAPE_SIZE for s in size
+        ):
             raise ModelError(
-                f"link '{link}': {kind} sizes must be {count} positive numbers, got {size}"
+                f"link '{link}': {kind} sizes must be {count} positive numbers of at most "
+                f"{MAX_SHAPE_SIZE:g} m, got {size}"
             )
         if not (visual or collision):
             raise ModelError(f"link '{link}': a {kind} must be a visual, a collision or both")
@@ -315,6 +328,13 @@ class ModelBuilder:
             )
         if not (math.isfinite(damping) and damping >= 0):
             raise ModelError(f"joint '{name}': damping must be >= 0")
+        for label, value in (("effort", effort), ("velocity", velocity)):
+            if value is not None and not (math.isfinite(value) and value >= 0):
+                raise ModelError(
+                    f"joint '{name}': {label} limit must be a finite number >= 0, got {value}"
+                )
+        if any(v is not None and not math.isfinite(v) for v in (lower, upper)):
+            raise ModelError(f"joint '{name}': limits must be finite numbers, got {limits}")
         self._joints[name] = _Joint(
             name,
             kind,
@@ -670,8 +690,14 @@ def _inertia_entries(inertia: np.ndarray) -> list[tuple[str, str]]:
 
 
 def _check_name(name: str, what: str) -> None:
+    from workbench.model.limits import name_problem, shown_name
+
     if not isinstance(name, str) or not name or any(c in name for c in "<>&\"' \t\n/"):
-        raise ModelError(f"{what} name {name!r} is empty or has characters XML names cannot hold")
+        shown = repr(shown_name(name)) if isinstance(name, str) else repr(name)
+        raise ModelError(f"{what} name {shown} is empty or has characters XML names cannot hold")
+    problem = name_problem(name)
+    if problem is not None:
+        raise ModelError(f"{what} name '{shown_name(name)}' {problem}")
 
 
 def _pose(pose: Any, what: str) -> Pose:

@@ -17,9 +17,11 @@ from workbench.errors import ModelError
 from workbench.model.limits import (
     MAX_LINKS,
     MAX_MODEL_BYTES,
+    MAX_SHAPE_SIZE,
     check_input_file,
     name_problem,
     shown_name,
+    uri_problem,
 )
 
 #: Numbers URDF and SDF share: sizes, inertia, joint limits and dynamics.
@@ -58,6 +60,9 @@ SDF_REFERENCES = ("parent", "child")
 #: SDF shapes and the sizes that must be above zero (sphere radius may be zero).
 SDF_SIZES = {"box": ("size",), "cylinder": ("radius", "length"), "capsule": ("radius", "length")}
 SDF_SIZES |= {"ellipsoid": ("radii",), "sphere": ()}
+#: URDF shapes and their size attributes (each at most :data:`MAX_SHAPE_SIZE`).
+URDF_SIZES = {"box": ("size",), "cylinder": ("radius", "length"), "sphere": ("radius",)}
+URDF_SIZES |= {"capsule": ("radius", "length"), "mesh": ("scale",)}
 
 
 class ModelInputError(ModelError):
@@ -66,8 +71,13 @@ class ModelInputError(ModelError):
 
 def _not_finite(label: str, shown: str, token: str) -> str:
     if shown.strip() == token:
-        return f"{label}: {shown.strip()} is not a finite number"
-    return f"{label}: {shown} holds {token}, which is not a finite number"
+        return f"{label}: {_cut(token)} is not a finite number"
+    return f"{label}: {_cut(shown)} holds {_cut(token)}, which is not a finite number"
+
+
+def _cut(text: str, length: int = 60) -> str:
+    """``text`` as a message shows it: at most ``length`` characters."""
+    return text if len(text) <= length else text[: length - 3] + "..."
 
 
 def _non_finite(text: str) -> str | None:
@@ -145,6 +155,30 @@ def check_urdf_element(root: Any, path: Path | None) -> None:
                     element,
                     "write finite numbers (a joint without bounds is continuous)",
                 )
+        parent = element.getparent()
+        if element.tag in URDF_SIZES and parent is not None and parent.tag == "geometry":
+            _check_urdf_shape(element, path)
+
+
+def _too_big(label: str, what: str, value: float) -> str:
+    largest = f"{MAX_SHAPE_SIZE:g} m, the largest shape workbench takes"
+    return f"{label}: {what} {value:g} is more than {largest}"
+
+
+def _check_urdf_shape(shape: Any, path: Path | None) -> None:
+    for attribute in URDF_SIZES[shape.tag]:
+        for token in (shape.get(attribute) or "").split():
+            try:
+                value = abs(float(token))
+            except ValueError:
+                continue
+            if value > MAX_SHAPE_SIZE:
+                raise _fail(
+                    _too_big(_label(shape, URDF_NAMED), attribute, value),
+                    path,
+                    shape,
+                    "give the shape's real size in metres",
+                )
 
 
 def check_sdf_file(path: Path) -> None:
@@ -158,7 +192,19 @@ def check_sdf_file(path: Path) -> None:
     from workbench.model.sdf_xml import read_sdf_text
 
     check_input_file(path, "model file", MAX_MODEL_BYTES)
-    root = read_sdf_text(path)
+    check_sdf_element(read_sdf_text(path), path)
+
+
+def check_sdf_element(root: Any, path: Path | None) -> None:
+    """:func:`check_sdf_file` for a parsed element (an SDF root, a world's ``<model>``).
+
+    Args:
+        root: The element; everything below it is checked.
+        path: The file it was read from, for messages (None: text with no file).
+
+    Raises:
+        ModelInputError: As :func:`check_sdf_file`.
+    """
     _check_names(root, SDF_NAMED, path)
     for element in root.iter():
         if not isinstance(element.tag, str) or element.tag == "plugin":
@@ -184,8 +230,21 @@ def check_sdf_file(path: Path) -> None:
                     element,
                     "give it a short name of printable characters",
                 )
+        if element.tag == "uri" and element.text:
+            problem = uri_problem(element.text.strip())
+            if problem is not None:
+                raise _fail(
+                    f"{_label(element, SDF_NAMED)}: '{shown_name(element.text.strip())}' {problem}",
+                    path,
+                    element,
+                    "give the model's folder name or file path",
+                )
         if element.tag in SDF_SIZES:
             _check_sdf_shape(element, path)
+        elif element.tag == "plane":
+            _check_sdf_plane(element, path)
+        elif element.tag == "mesh":
+            _check_sdf_scale(element, path)
         if element.tag == "limit":
             _check_sdf_limits(element, path)
 
@@ -197,15 +256,24 @@ def _numbers(element: Any) -> list[float]:
         return []
 
 
-def _check_sdf_shape(shape: Any, path: Path) -> None:
+def _check_sdf_shape(shape: Any, path: Path | None) -> None:
     for field in SDF_SIZES[shape.tag]:
         child = shape.find(field)
         if child is None:
             continue
         for value in _numbers(child):
+            if not math.isfinite(value):
+                continue  # reported as not finite where the number is
             if not value > 0:
                 raise _fail(
                     f"{_label(child, SDF_NAMED)}: {field} {value:g} must be more than zero",
+                    path,
+                    child,
+                    "give the shape's real size in metres",
+                )
+            if value > MAX_SHAPE_SIZE:
+                raise _fail(
+                    _too_big(_label(child, SDF_NAMED), field, value),
                     path,
                     child,
                     "give the shape's real size in metres",
@@ -218,9 +286,50 @@ def _check_sdf_shape(shape: Any, path: Path) -> None:
             radius,
             "give the shape's real size in metres",
         )
+    if radius is not None and any(value > MAX_SHAPE_SIZE for value in _numbers(radius)):
+        raise _fail(
+            _too_big(_label(radius, SDF_NAMED), "radius", max(_numbers(radius))),
+            path,
+            radius,
+            "give the shape's real size in metres",
+        )
 
 
-def _check_sdf_limits(limit: Any, path: Path) -> None:
+def _check_sdf_plane(plane: Any, path: Path | None) -> None:
+    normal = plane.find("normal")
+    values = _numbers(normal) if normal is not None else []
+    if normal is not None and len(values) == 3 and not any(values):
+        raise _fail(
+            f"{_label(normal, SDF_NAMED)}: the plane's normal is 0 0 0, which points nowhere",
+            path,
+            normal,
+            "give the direction the plane faces, e.g. 0 0 1",
+        )
+    size = plane.find("size")
+    values = [v for v in _numbers(size) if math.isfinite(v)] if size is not None else []
+    if any(abs(value) > MAX_SHAPE_SIZE for value in values):
+        raise _fail(
+            _too_big(_label(size, SDF_NAMED), "size", max(map(abs, values))),
+            path,
+            size,
+            "give the plane's real size in metres",
+        )
+
+
+def _check_sdf_scale(mesh: Any, path: Path | None) -> None:
+    scale = mesh.find("scale")
+    values = _numbers(scale) if scale is not None else []
+    if any(abs(value) > MAX_SHAPE_SIZE for value in values):
+        raise _fail(
+            f"{_label(scale, SDF_NAMED)}: scale {max(map(abs, values)):g} is larger than "
+            f"{MAX_SHAPE_SIZE:g}",
+            path,
+            scale,
+            "scale the mesh by its real factor (1 keeps its size)",
+        )
+
+
+def _check_sdf_limits(limit: Any, path: Path | None) -> None:
     lower, upper = limit.find("lower"), limit.find("upper")
     if lower is None or upper is None:
         return

@@ -127,14 +127,23 @@ def config_file(folder: Path) -> Path:
         ModelError: ``model.config`` is not XML, names no file, a missing one or one outside
             the folder, or gives a version that is not ``MAJOR.MINOR``.
     """
-    from workbench.model.limits import MAX_MODEL_BYTES, check_input_file
+    from workbench.model.limits import (
+        MAX_MODEL_BYTES,
+        check_input_file,
+        shown_name,
+        uri_problem,
+    )
 
     config = folder / "model.config"
     check_input_file(config, "model.config", MAX_MODEL_BYTES)
     try:
         root = etree.parse(str(config), etree.XMLParser(resolve_entities=False)).getroot()
     except (OSError, etree.XMLSyntaxError) as error:
-        raise ModelError(f"{config}: cannot read model.config: {error}") from None
+        from workbench.model.limits import xml_error_text
+
+        raise ModelError(
+            f"{config}: cannot read model.config: {xml_error_text(str(error))}"
+        ) from None
     entries = root.findall("sdf")
     if not entries:
         raise ModelError(f"{config}: no <sdf> element names the model file")
@@ -142,6 +151,9 @@ def config_file(folder: Path) -> Path:
     best = max(versions, key=lambda pair: pair[0])[1]
     text = (best.text or "").strip()
     where = f"{config}:{best.sourceline}"
+    problem = uri_problem(text)
+    if problem is not None:
+        raise ModelError(f"{where}: <sdf> '{shown_name(text)}' {problem}")
     shown = text if len(text) <= 80 else text[:77] + "..."
     relative = Path(text)
     if not text or relative.is_absolute() or ".." in relative.parts:

@@ -24,6 +24,9 @@ MAX_MESH_BYTES = 256 * 1024 * 1024
 MAX_NAME_LENGTH = 256
 #: Most links (and, separately, most joints) in one model.
 MAX_LINKS = 10_000
+#: Largest size of a shape (box edge, radius, length), m: a thousand kilometres. Drake's
+#: collision code overflows on sizes near the largest float (a 1e308 m box crashes it).
+MAX_SHAPE_SIZE = 1e6
 #: Most XML elements xacro may process for one file, macros expanded.
 MAX_XACRO_ELEMENTS = 200_000
 
@@ -102,6 +105,23 @@ def name_problem(name: str) -> str | None:
     bad = next((c for c in name if ord(c) < 32 or 127 <= ord(c) < 160), None)
     if bad is not None:
         return f"contains the control character {bad!r}"
+    return None
+
+
+#: Longest ``<uri>`` of an ``<include>`` or mesh, and longest part of it between slashes,
+#: characters (what a file system takes: PATH_MAX and NAME_MAX on Linux).
+MAX_URI_LENGTH, MAX_URI_PART = 4096, 255
+
+
+def uri_problem(uri: str) -> str | None:
+    """Why ``uri`` cannot name a model or file, or None (a name no file system holds)."""
+    if len(uri) > MAX_URI_LENGTH:
+        return f"has {len(uri):,} characters; at most {MAX_URI_LENGTH:,}"
+    longest = max((len(part) for part in uri.split("/")), default=0)
+    if longest > MAX_URI_PART:
+        return f"has a name of {longest:,} characters; a file name has at most {MAX_URI_PART}"
+    if any(ord(c) < 32 for c in uri):
+        return "contains a control character"
     return None
 
 

@@ -166,10 +166,15 @@ class GazeboRosApi:
         return self._spawn(request)
 
     def _spawn(self, request: Any) -> Any:
+        from workbench.sim.bounds import spawn_request_problem
         from workbench.sim.gazebo_ros_plugins.robot_namespace import with_robot_namespace
         from workbench.sim.loading import sim_model_from_xml
 
         name = request.model_name
+        problem = spawn_request_problem(name, request.robot_namespace, request.model_xml)
+        if problem is not None:
+            _LOG.error("SpawnModel: Failure - %s", problem)
+            return _spawn_reply(False, f"SpawnModel: Failure - {problem}")
         world = self.server.world
         if name in world.model_names():
             _LOG.error("SpawnModel: Failure - model name %s already exist.", name)

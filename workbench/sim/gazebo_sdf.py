@@ -8,9 +8,10 @@ link switches gravity off for the model; ``<plugin>`` and ``<sensor>`` elements
 are lifted out; ``<include>`` and nested ``<model>`` elements are merged into
 the model (:mod:`workbench.model.sdf_nesting`, names as Gazebo gives them);
 ``model://NAME/...`` and relative mesh URIs become files Drake can read
-(:mod:`workbench.model.sdf_uris`); stock Gazebo material scripts become colours. Drake reads the rest of SDFormat itself, including
-``<surface><friction><ode><mu>``. Inertias that break the triangle inequality
-are fixed with a warning, as in URDF (:mod:`workbench.sim.inertia`).
+(:mod:`workbench.model.sdf_uris`); stock Gazebo material scripts become colours;
+``<ode>`` friction's ``<mu>`` and ``<mu2>`` become their mean, as static and dynamic
+friction. Drake reads the rest of SDFormat itself. Inertias that break the triangle
+inequality are fixed with a warning, as in URDF (:mod:`workbench.sim.inertia`).
 """
 
 from __future__ import annotations
@@ -66,8 +67,20 @@ def sim_model_from_element(
     version: str | None = None,
 ) -> SimModel:
     """:func:`sim_model_from_sdf` for a parsed ``<model>`` element (changed in place)."""
+    from workbench.model.drake_guard import check_sdf_element
+    from workbench.sim.bounds import check_model_name
+
+    if name:
+        check_model_name(name, "model name")
     where = f"{source}:{model_element.sourceline}" if model_element.sourceline else source
     path = Path(source) if base_dir is not None and Path(source).is_file() else None
+    if _truth(model_element.findtext("static")):
+        _drop_broken_inertials(model_element)
+    try:
+        check_sdf_element(model_element, path)
+    except ModelError as error:
+        message = error.message if error.path is not None else f"{source}: {error.message}"
+        raise SimulationError(message, path=error.path, line=error.line, hint=error.hint) from None
     try:
         nesting = flatten_model(model_element, path=path, version=version)
     except ModelError as error:
@@ -139,6 +152,7 @@ def sim_model_from_element(
             error.message, path=error.path or path, line=error.line, hint=error.hint
         ) from None
     _material_colours(model_element)
+    _isotropic_friction(model_element)
     drop_material_scripts(model_element)
     for link in links:
         _planes_as_boxes(link, where)
@@ -150,6 +164,27 @@ def sim_model_from_element(
     sdf.append(model_element)
     model.text = etree.tostring(sdf, encoding="unicode")
     return model
+
+
+def _drop_broken_inertials(model_element: Any) -> None:
+    """Remove the ``<inertial>`` of a static model's links where it holds NaN or inf.
+
+    Gazebo ignores a static model's inertia, and worlds saved from it carry
+    ``<ixx>nan</ixx>`` for massless walls (turtlebot3_autorace); the simulator welds
+    the links, so their inertia is never used.
+    """
+    for link in model_element.findall("link"):
+        inertial = link.find("inertial")
+        if inertial is None:
+            continue
+        for element in inertial.iter():
+            try:
+                finite = all(np.isfinite([float(v) for v in (element.text or "").split()]))
+            except ValueError:
+                continue
+            if not finite:
+                link.remove(inertial)
+                break
 
 
 def _split_concave_meshes(link: Any, model: SimModel, where: str) -> None:
@@ -252,6 +287,31 @@ def _planes_as_boxes(link: Any, where: str) -> None:
         geometry.remove(plane)
         box = etree.SubElement(geometry, "box")
         etree.SubElement(box, "size").text = " ".join(f"{v:g}" for v in size)
+
+
+def _isotropic_friction(model_element: Any) -> None:
+    """Give ``<ode>`` friction the mean of its ``<mu>`` and ``<mu2>`` in both.
+
+    Gazebo's two coefficients are along two directions; Drake reads them as static and
+    dynamic friction and refuses a dynamic one above the static one (a model with only
+    ``<mu>0.8</mu>`` got ``<mu2>``'s default, 1). As for URDF's ``mu1``/``mu2``, the
+    collision gets the mean of the coefficients it gives, as both.
+    """
+    for ode in model_element.iter("ode"):
+        if ode.getparent() is None or ode.getparent().tag != "friction":
+            continue
+        given = [ode.find(key) for key in ("mu", "mu2")]
+        try:
+            values = [float((e.text or "").strip()) for e in given if e is not None]
+        except ValueError:
+            continue  # a malformed number: Drake names it
+        if not values or not all(np.isfinite(values)):
+            continue
+        mean = float(np.mean(values))
+        for key, element in zip(("mu", "mu2"), given, strict=True):
+            if element is None:
+                element = etree.SubElement(ode, key)
+            element.text = f"{mean:.17g}"
 
 
 def _vector(element: Any, default: tuple[float, ...], count: int = 3) -> tuple[float, ...]:

@@ -80,12 +80,24 @@ def sim_model_from_urdf(
         SimulationError: No links, or meshes that cannot be found.
     """
     from workbench.errors import ModelError
+    from workbench.model.drake_guard import check_urdf_element
+    from workbench.sim.bounds import check_model_name
 
+    if name:
+        check_model_name(name, "model name")
     where = source or str(description.path)
     try:
+        if description.document is not None:
+            # lines are the file's only for a file read as it is (not text, not xacro output)
+            in_file = source in (None, str(description.path)) and not description.expanded
+            check_urdf_element(description.document.root, description.path if in_file else None)
         text = description.prepared_text(name)
         root_link = description.root_link()
     except ModelError as error:
+        if error.line is not None and error.path is not None:
+            raise SimulationError(
+                error.message, path=error.path, line=error.line, hint=error.hint
+            ) from None
         raise SimulationError(f"{where}: {error.message}", hint=error.hint) from None
     root = etree.fromstring(text.encode())
     links = {link.get("name"): link for link in root.iterchildren("link")}

@@ -134,9 +134,10 @@ def check_options(options: ServerOptions) -> Any:
         )
     if not 0 <= options.seed <= MAX_SEED:
         raise SimulationError(f"--seed must be from 0 to {MAX_SEED} (2^32 - 1), got {options.seed}")
-    step = options.max_step_size
-    if step is not None and not (0 < step <= 0.1):
-        raise SimulationError(f"--max-step-size must be in (0, 0.1] s, got {step}")
+    if options.max_step_size is not None:
+        from workbench.sim.bounds import check_step_size
+
+        check_step_size(options.max_step_size, "--max-step-size")
     return load_world(options.world)
 
 

@@ -253,11 +253,16 @@ class World:
             joint_positions: Initial positions of 1-dof joints by name, rad or m.
 
         Raises:
-            SimulationError: The name is in use (the world is unchanged), the pose is
-                not finite, or Drake cannot load the model.
+            SimulationError: The name is in use or not a name Drake can take, the world
+                would hold more models or links than :mod:`workbench.sim.bounds` allows (the
+                world is unchanged), the pose is not finite, or Drake cannot load the model.
         """
+        from workbench.sim.bounds import check_model_name, check_room, model_links, world_load
+
+        check_model_name(model.name, "model name")
         if model.name in self._models or model.name in self._robots or model.name == GROUND_NAME:
             raise SimulationError(f"model name '{model.name}' is already in use")
+        check_room(world_load(self), model_links(model.text), model.static, model.name)
         X = _model_transform(model.name, X_WM)
         placed = PlacedModel(model, X, dict(joint_positions or {}), initial_X_WM=X)
         if self.diagram is None:

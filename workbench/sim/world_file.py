@@ -124,6 +124,7 @@ def load_world(name_or_path: str | os.PathLike[str]) -> WorldFile:
             hint="a world file is <sdf><world>...</world></sdf>",
         )
     result = WorldFile(name=world.get("name", path.stem), path=path)
+    _check_size(world, path)
     result.physics = _physics(world, path)
     version = root.get("version")
     for element in world:
@@ -164,7 +165,61 @@ def load_world(name_or_path: str | os.PathLike[str]) -> WorldFile:
     duplicates = {n for n in names if names.count(n) > 1}
     if duplicates:
         raise SimulationError(f"two models are named '{sorted(duplicates)[0]}'", path=path)
+    _check_totals(result, path)
     return result
+
+
+def _check_size(world: etree._Element, path: Path) -> None:
+    """Refuse a world that asks for more models, links or plugins than the simulator holds,
+    counted in the file before anything is loaded (an included model's are counted after)."""
+    from workbench.sim.bounds import MAX_WORLD_MODELS, count_problem
+
+    built_in = ("model://ground_plane", "model://sun")
+    entries = [
+        e
+        for e in world
+        if e.tag == "model"
+        or (e.tag == "include" and (e.findtext("uri") or "").strip() not in built_in)
+    ]
+    if len(entries) > MAX_WORLD_MODELS:
+        raise SimulationError(
+            f"the world has {len(entries):,} models and includes; the simulator holds at most "
+            f"{MAX_WORLD_MODELS:,}",
+            path=path,
+            line=entries[MAX_WORLD_MODELS].sourceline,
+            hint="see 'Limits on input' in the README",
+        )
+    moving = static = 0
+    for model in (e for e in entries if e.tag == "model"):
+        links = sum(1 for _ in model.iter("link"))
+        if (model.findtext("static") or "").strip().lower() in ("1", "true"):
+            static += links
+        else:
+            moving += links
+    plugins = sum(1 for entry in world if entry.tag != "state" for _ in entry.iter("plugin"))
+    problem = count_problem(moving, static, plugins)
+    if problem is not None:
+        raise SimulationError(
+            f"the world has {problem}",
+            path=path,
+            hint="see 'Limits on input' in the README",
+        )
+
+
+def _check_totals(result: WorldFile, path: Path) -> None:
+    """:func:`_check_size` once the included models are loaded (their links and plugins)."""
+    from workbench.sim.bounds import count_problem, model_links
+
+    links = [(model_links(item.model.text), item.model.static) for item in result.models]
+    plugins = len(result.plugins) + sum(len(item.model.plugins) for item in result.models)
+    moving = sum(count for count, static in links if not static)
+    problem = count_problem(moving, sum(count for count, static in links if static), plugins)
+    if problem is not None:
+        raise SimulationError(
+            f"the world and the models it includes have {problem}",
+            path=path,
+            hint="see 'Limits on input' in the README",
+        )
 
 
 def world_model(element: etree._Element, path: Path, version: str | None) -> SimModel:
@@ -205,10 +260,19 @@ def ground_height(model: etree._Element) -> float | None:
 
 def _include(element: etree._Element, result: WorldFile, path: Path) -> None:
     from workbench.model.gazebo_models import BUILT_IN_MODELS, uri_path
+    from workbench.model.limits import shown_name, uri_problem
     from workbench.model.sdf_nesting import include_file
     from workbench.sim.model_spec import plugin_spec
 
     uri = (element.findtext("uri") or "").strip()
+    problem = uri_problem(uri)
+    if problem is not None:
+        raise SimulationError(
+            f"<include> <uri> '{shown_name(uri)}' {problem}",
+            path=path,
+            line=element.sourceline,
+            hint="give the model's folder name or file path",
+        )
     name = uri_path(uri) if uri.startswith("model://") else None
     if name == "ground_plane":
         result.ground_plane = True
@@ -222,6 +286,15 @@ def _include(element: etree._Element, result: WorldFile, path: Path) -> None:
             error.message, path=error.path, line=error.line, hint=error.hint
         ) from None
     new_name = (element.findtext("name") or "").strip() or None
+    if new_name is not None:
+        from workbench.sim.bounds import check_model_name
+
+        try:
+            check_model_name(new_name, "<include> <name>")
+        except SimulationError as error:
+            name_element = element.find("name")
+            line = name_element.sourceline if name_element is not None else element.sourceline
+            raise SimulationError(error.message, path=path, line=line, hint=error.hint) from None
     model = _read_model(file, new_name)
     for plugin in element.findall("plugin"):
         model.plugins.append(plugin_spec(plugin, "model", None, file.parent, str(path)))
@@ -249,12 +322,14 @@ def _physics(world: etree._Element, path: Path) -> Physics:
         step = element.find("max_step_size")
         if step is not None:
             value = _numbers(step, 1, path)[0]
-            if not 0 < value <= 0.1:
+            from workbench.sim.bounds import check_step_size
+
+            try:
+                check_step_size(value, "<max_step_size>")
+            except SimulationError as error:
                 raise SimulationError(
-                    f"<max_step_size> must be in (0, 0.1] s, got {value:g}",
-                    path=path,
-                    line=step.sourceline,
-                )
+                    error.message, path=path, line=step.sourceline, hint=error.hint
+                ) from None
             physics.time_step = value
         rtf = element.find("real_time_factor")
         if rtf is not None:
@@ -272,6 +347,8 @@ def _physics(world: etree._Element, path: Path) -> Physics:
 def _numbers(element: etree._Element, count: int, path: Path) -> tuple[float, ...]:
     import math
 
+    from workbench.model.limits import shown_name
+
     text = (element.text or "").strip()
     try:
         values = tuple(float(v) for v in text.split())
@@ -279,7 +356,8 @@ def _numbers(element: etree._Element, count: int, path: Path) -> tuple[float, ..
         values = ()
     if len(values) != count or not all(math.isfinite(v) for v in values):
         raise SimulationError(
-            f"<{element.tag}> must be {count} finite number{'s' if count > 1 else ''}, got '{text}'",
+            f"<{element.tag}> must be {count} finite number{'s' if count > 1 else ''}, got "
+            f"'{shown_name(text, 60)}'",
             path=path,
             line=element.sourceline,
         )
