@@ -19,7 +19,7 @@ sys.path.insert(0, str(HERE.parents[1]))  # tests/, for hostile_corpus
 
 from hostile_corpus import cases, run_case  # noqa: E402
 
-KINDS = ("parameters", "launch", "bags", "logs", "maps")
+KINDS = ("parameters", "launch", "bags", "logs", "maps", "rviz", "serial")
 
 HEADER = """\
 # Hostile {kind}: each case's command and what it must print (format: tests/hostile_corpus.py).
