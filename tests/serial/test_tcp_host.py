@@ -16,14 +16,13 @@ import threading
 
 import pytest
 from process_helpers import joined_bus, private_core, wait_for
-from rosserial_bytes import REQUEST_TOPICS, frame, string, topic_info
+from rosserial_bytes import frame, string, topic_info
+from tcp_host_helpers import WAIT, Lines, connect, tcp_host
 
 from workbench.bus import Bus, Node
 from workbench.errors import SerialError
 from workbench.serial.bridge import MAX_PUBLISHERS, MAX_SUBSCRIBERS, REFUSALS_SHOWN
-from workbench.serial.serial_node import DEFAULT_BIND, listen, serve_tcp
-
-WAIT = 60.0
+from workbench.serial.serial_node import DEFAULT_BIND, listen
 
 
 def _local_address() -> str | None:
@@ -37,64 +36,6 @@ def _local_address() -> str | None:
     finally:
         probe.close()
     return None if address.startswith("127.") or address == "0.0.0.0" else address
-
-
-class Lines:
-    """The host's log lines, for the test to look at (they are printed as well)."""
-
-    def __init__(self, logger) -> None:
-        self.lines: list[str] = []
-        original = logger.log
-
-        def log(level, text, *args):
-            self.lines.append(str(text) % args if args else str(text))
-            original(level, text, *args)
-
-        logger.log = log
-
-    def having(self, text: str) -> list[str]:
-        return [line for line in list(self.lines) if text in line]
-
-
-@contextlib.contextmanager
-def tcp_host(bus, bind: str = DEFAULT_BIND):
-    """``serve_tcp`` on a free port in a thread; yields ``(port, log lines)``."""
-    node = Node("serial_node", bus=bus)
-    lines = Lines(node.get_logger())
-    with socket.socket() as probe:
-        probe.bind(("127.0.0.1", 0))
-        port = probe.getsockname()[1]
-    stop = threading.Event()
-    errors: list[BaseException] = []
-
-    def serve() -> None:
-        try:
-            serve_tcp(node, port, stop, bind)
-        except BaseException as error:  # handed to the test below
-            errors.append(error)
-
-    thread = threading.Thread(target=serve, name="test-tcp-host", daemon=True)
-    thread.start()
-    try:
-        assert wait_for(lambda: lines.having("Waiting for socket connection") or errors, WAIT)
-        assert not errors, errors
-        yield port, lines
-    finally:
-        stop.set()
-        thread.join(WAIT)
-        node.shutdown()
-    assert not thread.is_alive()
-    assert not errors, errors
-
-
-def _connect(port: int, address: str = "127.0.0.1") -> socket.socket:
-    board = socket.create_connection((address, port), timeout=WAIT)
-    received = b""
-    while REQUEST_TOPICS not in received:
-        chunk = board.recv(4096)
-        assert chunk, "the host closed the connection"
-        received += chunk
-    return board
 
 
 @pytest.fixture
@@ -118,14 +59,14 @@ def test_a_board_elsewhere_on_the_network_reaches_the_host_only_with_bind(bus):
     address = _local_address()
     with tcp_host(bus) as (port, lines):
         assert lines.having("Listening on 127.0.0.1 only")
-        _connect(port).close()  # this machine: served
+        connect(port).close()  # this machine: served
         if address is not None:
             with pytest.raises(ConnectionRefusedError):
                 socket.create_connection((address, port), timeout=WAIT)
     with tcp_host(bus, "0.0.0.0") as (port, lines):
         [warning] = lines.having("any machine that reaches it can connect")
         assert f"0.0.0.0 port {port}" in warning
-        _connect(port, address or "127.0.0.1").close()
+        connect(port, address or "127.0.0.1").close()
 
 
 def test_bind_is_refused_without_tcp_before_joining_the_bus(run_cli, tmp_path):
@@ -167,7 +108,7 @@ def _session(bus, port: int, lines: Lines, count: int) -> tuple[int, list[str]]:
     """A device that announces ``count`` publishers and subscribers, delivers a message on
     one of them, and disconnects; returns the threads counted while it was connected and
     the refusals logged."""
-    board = _connect(port)
+    board = connect(port)
     try:
         _announce(board, count)
         shown = min(max(count - MAX_PUBLISHERS, 0) * 2, REFUSALS_SHOWN)

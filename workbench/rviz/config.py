@@ -94,6 +94,11 @@ def load_config(path: str | os.PathLike[str]) -> RvizConfig:
             options = _options(class_name, entry)
         except (TypeError, ValueError) as error:
             raise ViewerError(f"display '{_shown(name)}': {error}", path=file) from None
+        _check_names(options, f"display '{_shown(name)}'", file)
+        try:  # what the display itself refuses, with the file named
+            DISPLAY_CLASSES[class_name](name=name, **options)
+        except ViewerError as error:
+            raise ViewerError(error.message, path=file, hint=error.hint) from None
         displays.append(DisplaySpec(class_name, name, bool(entry.get("Enabled", True)), options))
     tools = _tools(manager.get("Tools"), file)
     return RvizConfig(str(fixed) if fixed else None, displays, unknown, tools)
@@ -129,7 +134,28 @@ def _tools(entries: Any, file: Path) -> ToolSettings:
             if key in entry:
                 setattr(settings, attribute, _number(entry[key], f"Tools: {tool}: {key}", file))
     settings.tools = tuple(present)
+    _check_names(
+        {"topic": settings.goal_topic, "pose topic": settings.initial_pose_topic}, "Tools", file
+    )
     return settings
+
+
+def _check_names(options: dict[str, Any], where: str, file: Path) -> None:
+    """Refuse topic and parameter names the bus would refuse (before the viewer joins it).
+
+    Raises:
+        ViewerError: A name that is not a legal ROS name.
+    """
+    from workbench.bus.names import check_name
+    from workbench.errors import WorkbenchError
+
+    for key, value in options.items():
+        if key in ("topic", "pose topic", "param") and value:
+            what = "parameter name" if key == "param" else "topic name"
+            try:
+                check_name(value, what)
+            except WorkbenchError as error:
+                raise ViewerError(f"{where}: {error.message}", path=file, hint=error.hint) from None
 
 
 def _number(value: Any, where: str, file: Path) -> float:

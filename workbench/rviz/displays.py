@@ -296,7 +296,7 @@ class MapDisplay(Display):
         super().__init__(topic, name)
         if color_scheme not in SCHEMES:
             raise ViewerError(
-                f"Map display '{self.name}': unknown Color Scheme '{color_scheme}'",
+                f"Map display '{self.name:.60}': unknown Color Scheme '{color_scheme:.60}'",
                 hint="one of: " + ", ".join(SCHEMES),
             )
         self.color_scheme = color_scheme
