@@ -32,7 +32,7 @@ from workbench.rviz.pose_tools import TOOL_LABELS, ToolSettings
 #: Largest ``.rviz`` file read, bytes (RViz's own are a few KiB).
 MAX_CONFIG_BYTES = 1 * MiB
 #: Bounds of the YAML inside, after alias expansion.
-CONFIG_LIMITS = TreeLimits(max_depth=64, max_nodes=100_000, max_bytes=4 * MiB)
+CONFIG_LIMITS = TreeLimits(max_depth=64, max_nodes=50_000, max_bytes=4 * MiB)
 #: Most displays a config may list, those inside groups included.
 MAX_DISPLAYS = 500
 #: Most display groups nested in one another.

@@ -140,7 +140,11 @@ def check(args: argparse.Namespace, config: Any) -> int:
     for spec in config.displays:  # what the displays refuse, without a viewer or a bus
         DISPLAY_CLASSES[spec.class_name](**spec.options)
     if config.unknown:
-        _LOG.warning("not drawn here (unknown display classes): %s", ", ".join(config.unknown))
+        print(
+            "[WARN] not drawn here (unknown display classes): " + ", ".join(config.unknown),
+            file=sys.stderr,
+            flush=True,
+        )
     names = ", ".join(f"{spec.name} ({spec.class_name})" for spec in config.displays) or "none"
     fixed = args.fixed_frame or config.fixed_frame or "map, else the tf root"
     print(f"{args.display_config}: fixed frame {fixed}; displays: {names}", flush=True)
