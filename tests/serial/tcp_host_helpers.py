@@ -56,7 +56,7 @@ def tcp_host(bus, bind: str = DEFAULT_BIND):
     thread = threading.Thread(target=serve, name="test-tcp-host", daemon=True)
     thread.start()
     try:
-        assert wait_for(lambda: lines.having("Waiting for socket connection") or errors, WAIT)
+        assert wait_for(lambda: "Waiting for socket connection" in lines.lines or errors, WAIT)
         assert not errors, errors
         yield port, lines
     finally:

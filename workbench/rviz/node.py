@@ -135,10 +135,6 @@ def check(args: argparse.Namespace, config: Any) -> int:
 
     if config is None:
         raise ViewerError("--check reads a config: give it with -d CONFIG")
-    from workbench.rviz.rviz import DISPLAY_CLASSES
-
-    for spec in config.displays:  # what the displays refuse, without a viewer or a bus
-        DISPLAY_CLASSES[spec.class_name](**spec.options)
     if config.unknown:
         print(
             "[WARN] not drawn here (unknown display classes): " + ", ".join(config.unknown),
