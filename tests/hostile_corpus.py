@@ -217,6 +217,35 @@ def _world_includes_1200_links(tmp: Path) -> str:
     return _world(tmp, includes)
 
 
+_RVIZ_HEAD = "Visualization Manager:\n  Global Options:\n    Fixed Frame: map\n  Displays:\n"
+
+
+def _rviz_long_comment(tmp: Path) -> str:
+    """A valid .rviz config after a 20 MB comment."""
+    path = tmp / "commented.rviz"
+    with open(path, "w") as stream:
+        for _ in range(20):
+            stream.write("#" + "x" * (1024 * 1024 - 2) + "\n")
+        stream.write(_RVIZ_HEAD + "    - Class: rviz/Grid\n      Name: Grid\n")
+    return str(path)
+
+
+def _rviz_5000_displays(tmp: Path) -> str:
+    """An .rviz config listing 5,000 Marker displays."""
+    path = tmp / "displays.rviz"
+    entry = "    - Class: rviz/Marker\n      Name: Marker {0}\n      Marker Topic: m{0}\n"
+    path.write_text(_RVIZ_HEAD + "".join(entry.format(i) for i in range(5000)))
+    return str(path)
+
+
+def _rviz_1000_deep_groups(tmp: Path) -> str:
+    """An .rviz config with display groups nested 1,000 deep (flow style)."""
+    path = tmp / "deep.rviz"
+    group = "{Class: rviz/Group, Name: G, Displays: ["
+    path.write_text(_RVIZ_HEAD + "    - " + group * 1000 + "]}" * 1000 + "\n")
+    return str(path)
+
+
 #: ``make:`` name -> function(tmp folder) -> the ``{input}`` path.
 GENERATORS: dict[str, Callable[[Path], str]] = {
     "fifo": _fifo,
@@ -241,6 +270,9 @@ GENERATORS: dict[str, Callable[[Path], str]] = {
     "world_500_plugins": _world_500_plugins,
     "world_3000_static_links": _world_3000_static_links,
     "world_includes_1200_links": _world_includes_1200_links,
+    "rviz_long_comment": _rviz_long_comment,
+    "rviz_5000_displays": _rviz_5000_displays,
+    "rviz_1000_deep_groups": _rviz_1000_deep_groups,
 }
 
 

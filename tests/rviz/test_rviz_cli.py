@@ -126,7 +126,7 @@ def test_rviz_node_name_and_snapshot_without_a_bus(tmp_path, run_cli):
 @pytest.mark.parametrize(
     "text, message",
     [
-        ("a: [unclosed", "not YAML"),
+        ("a: [unclosed", "not valid YAML"),
         ("Panels: []\n", "not an RViz config: no 'Visualization Manager' section"),
     ],
 )

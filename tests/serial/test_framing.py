@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from fuzz_helpers import fuzz_runs, fuzz_seed, report
 
 from workbench.serial import framing
 from workbench.serial.framing import Frame, FrameDecoder, FrameProblem
@@ -160,7 +161,8 @@ def fuzz():
 
 
 def test_seeded_fuzz_delivers_every_valid_frame_once_and_reports_the_damage(fuzz):
-    result = fuzz.fuzz(300, seed=1000)
+    runs = fuzz_runs(300)
+    result = fuzz.fuzz(runs, seed=fuzz_seed(1000))
     assert result.crashes == 0
     assert result.wrong_streams == []
     assert result.delivered_once == result.valid_frames > 2000
@@ -169,6 +171,14 @@ def test_seeded_fuzz_delivers_every_valid_frame_once_and_reports_the_damage(fuzz
     # what passes by chance is about 1/256 of the damage, never more than a few
     assert result.reported + result.passed_by_chance == result.damaged_frames
     assert result.passed_by_chance <= result.damaged_frames // 64
+    report(
+        "rosserial framing",
+        runs,
+        valid_frames=result.valid_frames,
+        damaged_frames=result.damaged_frames,
+        reported=result.reported,
+        passed_by_chance=result.passed_by_chance,
+    )
 
 
 def test_the_fuzz_check_catches_a_decoder_that_drops_frames(fuzz, monkeypatch):

@@ -486,6 +486,8 @@ class ZenohTransport:
                     name=f"workbench-raw {topic}",
                     daemon=True,
                 )
+                # the pumps of subscriptions undeclared since have ended: forget them
+                self._pumps = [p for p in self._pumps if p.is_alive()]
                 self._pumps.append(pump)
                 pump.start()
             elif zsub is None:

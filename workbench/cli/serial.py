@@ -2,7 +2,8 @@
 
 * ``workbench serial [PORT] [--baud 57600]``: the host node, as ``rosrun
   rosserial_python serial_node.py PORT`` (``_port:=``/``_baud:=`` work too);
-* ``workbench serial tcp [TCP_PORT]``: the host for Wi-Fi/Ethernet boards (11411);
+* ``workbench serial tcp [TCP_PORT] [--bind ADDRESS]``: the host for Wi-Fi/Ethernet boards
+  (11411, on 127.0.0.1 unless ``--bind`` opens it to the network);
 * ``workbench serial virtual SKETCH``: a virtual board on a pseudo-terminal;
 * ``workbench serial make-libraries DIR``: ros_lib's message headers for the Arduino IDE.
 """
@@ -16,7 +17,8 @@ from collections.abc import Sequence
 
 def configure(parser: argparse.ArgumentParser) -> None:
     parser.usage = (
-        "workbench serial [PORT | tcp [TCP_PORT]] [--baud BAUD] [NAME:=VALUE ...]\n"
+        "workbench serial [PORT | tcp [TCP_PORT] [--bind ADDRESS]] [--baud BAUD] "
+        "[NAME:=VALUE ...]\n"
         "       workbench serial virtual SKETCH [--board BOARD] [--buffer BYTES] [--link PATH]\n"
         "       workbench serial make-libraries DIR"
     )
@@ -34,6 +36,12 @@ def configure(parser: argparse.ArgumentParser) -> None:
         "and ROS arguments (_baud:=115200, chatter:=/x)",
     )
     parser.add_argument("--baud", type=int, help="bits per second (default ~baud or 57600)")
+    parser.add_argument(
+        "--bind",
+        metavar="ADDRESS",
+        help="tcp: the address to listen on (default ~bind or 127.0.0.1, this machine only); "
+        "0.0.0.0 lets any machine on the network connect as a device and use the bus",
+    )
     virtual = parser.add_argument_group("virtual board")
     virtual.add_argument("--board", default="uno", help="uno (280-byte buffers), mega (512) ...")
     virtual.add_argument("--buffer", type=int, help="input and output buffer size in bytes")
@@ -66,17 +74,25 @@ def run(args: argparse.Namespace) -> int:
     if args.target == "make-libraries":
         return make_libraries(args.rest)
     argv = ([args.target] if args.target else []) + list(args.rest)
-    return host(argv, baud=args.baud)
+    return host(argv, baud=args.baud, bind=args.bind)
 
 
-def host(argv: Sequence[str], baud: int | None = None) -> int:
+def host(argv: Sequence[str], baud: int | None = None, bind: str | None = None) -> int:
     """Run the rosserial host node (``serial_node.py``) with ``argv`` until interrupted."""
     from workbench.errors import SerialError
     from workbench.serial.serial_node import run as run_node
 
-    if baud is not None and baud <= 0:
-        raise SerialError(f"--baud must be positive, not {baud}", hint="e.g. --baud 57600")
-    return run_node(list(argv), baud=baud)
+    if baud is not None and not 0 < baud < 2**31:
+        raise SerialError(
+            f"--baud must be a positive 32-bit number, not {str(baud)[:40]}",
+            hint="e.g. --baud 57600",
+        )
+    if bind is not None and (not argv or argv[0] != "tcp"):
+        raise SerialError(
+            "--bind is for tcp mode (a board on the network)",
+            hint=f"workbench serial tcp --bind {bind[:100]}",
+        )
+    return run_node(list(argv), baud=baud, bind=bind)
 
 
 def make_libraries(argv: Sequence[str]) -> int:

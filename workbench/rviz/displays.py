@@ -2,11 +2,17 @@
 
 from __future__ import annotations
 
+import math
+import numbers
 from typing import Any
 
 import numpy as np
 
+from workbench.errors import ViewerError
 from workbench.rviz.display import Context, Display
+
+#: Most cells a side of the Grid display (2,002 lines; RViz's default is 10).
+MAX_GRID_CELLS = 1000
 
 
 def _stamped_transform(context: Context, header: Any) -> Any:
@@ -32,15 +38,32 @@ def _rgba(rgb: tuple[float, ...], alpha: float = 1.0) -> Any:
 
 
 class GridDisplay(Display):
-    """A grid in the fixed frame's xy plane (RViz: 10 cells of 1 m, grey)."""
+    """A grid in the fixed frame's xy plane (RViz: 10 cells of 1 m, grey).
+
+    Raises:
+        ViewerError: ``cells`` not a whole number from 1 to :data:`MAX_GRID_CELLS`, or
+            ``cell_size`` not a finite number above 0.
+    """
 
     class_name = "Grid"
 
     def __init__(self, cells: int = 10, cell_size: float = 1.0, name: str = "Grid") -> None:
+        whole = isinstance(cells, numbers.Integral) and not isinstance(cells, bool)
+        if not whole or not 1 <= cells <= MAX_GRID_CELLS:
+            raise ViewerError(
+                f"Grid '{name:.60}': cells must be a whole number from 1 to {MAX_GRID_CELLS:,}, "
+                f"not {cells!r:.40}"
+            )
+        if not isinstance(cell_size, numbers.Real) or not (
+            math.isfinite(cell_size) and cell_size > 0
+        ):
+            raise ViewerError(
+                f"Grid '{name:.60}': cell_size must be a finite number above 0, not {cell_size!r:.40}"
+            )
         super().__init__(topic="", name=name)
-        self.cells = cells
-        self.cell_size = cell_size
-        self._drawn = False
+        self.cells: int = int(cells)
+        self.cell_size: float = float(cell_size)
+        self._drawn: bool = False
 
     def update(self, context: Context) -> None:
         if self._drawn:
@@ -273,7 +296,7 @@ class MapDisplay(Display):
         super().__init__(topic, name)
         if color_scheme not in SCHEMES:
             raise ViewerError(
-                f"Map display '{self.name}': unknown Color Scheme '{color_scheme}'",
+                f"Map display '{self.name:.60}': unknown Color Scheme '{color_scheme:.60}'",
                 hint="one of: " + ", ".join(SCHEMES),
             )
         self.color_scheme = color_scheme

@@ -36,10 +36,36 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--port", type=int, help="Meshcat port (default: the first free one from 7000)"
     )
+    parser.add_argument(
+        "--check",
+        action="store_true",
+        help="read the -d config, print its displays and exit (no viewer, no bus)",
+    )
 
 
-def build(args: argparse.Namespace, bus: Any = None, meshcat: Any = None) -> Any:
+def read_config(args: argparse.Namespace) -> Any:
+    """The :class:`~workbench.rviz.config.RvizConfig` of ``-d`` (None without one).
+
+    Raises:
+        ViewerError: A config that cannot be read or is past a bound.
+    """
+    if not args.display_config:
+        return None
+    from workbench.rviz.config import load_config
+
+    return load_config(args.display_config)
+
+
+def build(
+    args: argparse.Namespace, bus: Any = None, meshcat: Any = None, config: Any = None
+) -> Any:
     """The :class:`~workbench.rviz.RViz` the options describe.
+
+    Args:
+        args: The parsed options.
+        bus: The bus (None: the process's default bus).
+        meshcat: A Meshcat to draw in (None: the process viewer's, or one on ``--port``).
+        config: The ``-d`` config already read (None: read it here).
 
     Raises:
         ViewerError: A config that cannot be read.
@@ -50,10 +76,9 @@ def build(args: argparse.Namespace, bus: Any = None, meshcat: Any = None) -> Any
     displays: list[Any] = list(DEFAULT_DISPLAYS)
     specs = []
     tools = None
-    if args.display_config:
-        from workbench.rviz.config import load_config
-
-        config = load_config(args.display_config)
+    if config is None:
+        config = read_config(args)
+    if config is not None:
         fixed = fixed or config.fixed_frame
         specs = config.displays
         tools = config.tools
@@ -72,10 +97,16 @@ def build(args: argparse.Namespace, bus: Any = None, meshcat: Any = None) -> Any
 
 
 def run(args: argparse.Namespace) -> int:
-    """Draw until interrupted, or for ``--after`` seconds then write the snapshots."""
+    """Draw until interrupted, or for ``--after`` seconds then write the snapshots.
+
+    The ``-d`` config is read (and ``--check`` ends) before the node joins the bus.
+    """
+    config = read_config(args)
+    if getattr(args, "check", False):
+        return check(args, config)
     from workbench.bus import default_bus
 
-    rviz = build(args, default_bus())
+    rviz = build(args, default_bus(), config=config)
     print(f"[INFO] rviz: {rviz.url} (fixed frame: {rviz.fixed_frame})", flush=True)
     try:
         # Meshcat is driven from this thread (it must be the one that created it)
@@ -95,6 +126,24 @@ def run(args: argparse.Namespace) -> int:
 
             print(f"[INFO] image: {render_png(html, args.png)}", flush=True)
         rviz.close()
+    return 0
+
+
+def check(args: argparse.Namespace, config: Any) -> int:
+    """``--check``: print what the config would show; 0 (the config was read)."""
+    from workbench.errors import ViewerError
+
+    if config is None:
+        raise ViewerError("--check reads a config: give it with -d CONFIG")
+    if config.unknown:
+        print(
+            "[WARN] not drawn here (unknown display classes): " + ", ".join(config.unknown),
+            file=sys.stderr,
+            flush=True,
+        )
+    names = ", ".join(f"{spec.name} ({spec.class_name})" for spec in config.displays) or "none"
+    fixed = args.fixed_frame or config.fixed_frame or "map, else the tf root"
+    print(f"{args.display_config}: fixed frame {fixed}; displays: {names}", flush=True)
     return 0
 
 

@@ -21,6 +21,11 @@ the same log lines:
 Unlike the original it never loses a frame to a damaged neighbour (see
 :mod:`workbench.serial.framing`), never blocks reading on a service the device
 calls, and keeps its bus endpoints when the link is replaced after a reconnect.
+What one device may set up is bounded (:data:`MAX_PUBLISHERS`,
+:data:`MAX_SUBSCRIBERS`, :data:`MAX_SERVICES`; ros_lib's own default is 25
+publishers and 25 subscribers): a registration past a bound is refused with one
+line naming the device and the topic, and :meth:`Bridge.forget_device` removes
+everything a device set up (the TCP host calls it when a device disconnects).
 """
 
 from __future__ import annotations
@@ -37,6 +42,7 @@ from workbench.msgs import deserialize, get_type, md5sum, serialize
 from workbench.serial import framing
 from workbench.serial.framing import Frame, FrameDecoder, FrameProblem
 from workbench.serial.host_endpoints import (
+    CallQueue,
     DevicePublisher,
     DeviceServiceClient,
     DeviceServiceServer,
@@ -80,6 +86,18 @@ SETTLE_WAIT = 0.02
 IDLE_FLUSH = 0.5
 #: At most one topic request per this many seconds for frames on unknown ids.
 REQUEST_INTERVAL = 0.5
+#: Most publishers one device may set up (ros_lib's default MAX_PUBLISHERS is 25).
+MAX_PUBLISHERS = 100
+#: Most subscribers one device may set up (ros_lib's default MAX_SUBSCRIBERS is 25).
+MAX_SUBSCRIBERS = 100
+#: Most services (servers and clients together) one device may set up.
+MAX_SERVICES = 100
+#: Refusals logged one by one per device before the rest are summed up in one line.
+REFUSALS_SHOWN = 10
+
+
+class RegistrationRefused(WorkbenchError):
+    """A device set up more publishers, subscribers or services than the host allows."""
 
 
 class Bridge:
@@ -120,6 +138,9 @@ class Bridge:
         self.last_wall_sync = 0.0
         self.frames_in = 0
         self.problems = 0
+        self.device = "the device"
+        self.refused = 0
+        self.calls = CallQueue(self.log)
         self._last_bytes = clock()
         self._last_request = -1e9
         self._writes: queue.SimpleQueue[tuple[bytes, threading.Event | None] | None] = (
@@ -148,6 +169,7 @@ class Bridge:
     def attach(self, link: Any) -> None:
         """Talk over ``link`` from now on (a new device, or the same one after a reconnect)."""
         self.link = link
+        self.device = str(getattr(link, "name", "the device"))
         self.decoder.reset()
         self.decoder.max_length = MAX_PAYLOAD
         self.buffer_out = self.buffer_in = -1
@@ -288,11 +310,59 @@ class Bridge:
         done.wait(timeout)
 
     def close(self) -> None:
-        """Stop the writer thread (the node's shutdown closes the bus endpoints)."""
+        """Stop the writer and service-call threads (the node's shutdown closes the bus
+        endpoints; :meth:`forget_device` closes them now). :meth:`attach` starts them again."""
+        self.calls.close()
         if self._writer is not None:
             self._writes.put(None)
             self._writer.join(2.0)
             self._writer = None
+            self._writes = queue.SimpleQueue()  # nothing queued for one device reaches the next
+
+    def forget_device(self) -> None:
+        """Remove every publisher, subscriber and service the device set up on the bus."""
+        endpoints: list[Any] = [
+            *self.publishers.values(),
+            *self.subscribers.values(),
+            *self.service_servers.values(),
+            *self.service_clients.values(),
+        ]
+        self.publishers.clear()
+        self.subscribers.clear()
+        self.service_servers.clear()
+        self.service_clients.clear()
+        self.callbacks.clear()
+        for endpoint in endpoints:
+            try:
+                endpoint.close()
+            except WorkbenchError as error:
+                self.log.error(error.one_line())
+        self.calls.close()
+        self.refused = 0
+        self.buffer_out = self.buffer_in = -1
+        self.decoder.max_length = MAX_PAYLOAD
+
+    def _check_room(self, kind: str, count: int, limit: int, topic: str) -> None:
+        """Refuse a new ``kind`` on ``topic`` when the device already has ``limit`` of them.
+
+        Raises:
+            RegistrationRefused: The device is at the limit (logged by the caller for the
+                first :data:`REFUSALS_SHOWN` refusals; later ones raise an empty message).
+        """
+        if count < limit:
+            return
+        self.refused += 1
+        if self.refused > REFUSALS_SHOWN:
+            raise RegistrationRefused("")
+        more = (
+            f"; further refusals of {self.device} are not logged"
+            if self.refused == REFUSALS_SHOWN
+            else ""
+        )
+        raise RegistrationRefused(
+            f"{self.device} set up {limit} {kind}s already, the host's limit per device; "
+            f"refusing {kind} {topic[:200]}{more}"
+        )
 
     def _discard_input(self) -> None:
         if self.link is not None:
@@ -379,10 +449,16 @@ class Bridge:
             self.buffer_in = size
             self.log.info("Note: subscribe buffer size is %d bytes", size)
 
+    def _refusal(self, kind: str, error: WorkbenchError) -> None:
+        if error.message:  # refusals past REFUSALS_SHOWN say nothing
+            self.log.error("Creation of %s failed: %s", kind, error.one_line())
+
     def _setup_publisher(self, payload: bytes) -> None:
         try:
             info = self._topic_info(payload)
             old = self.publishers.get(info.topic_id)
+            if old is None:
+                self._check_room("publisher", len(self.publishers), MAX_PUBLISHERS, info.topic_name)
             if old is None or not old.same(info):
                 if old is not None:
                     old.close()
@@ -394,13 +470,16 @@ class Bridge:
             self._set_publish_size(info.buffer_size)
             self.log.info("Setup publisher on %s [%s]", info.topic_name, info.message_type)
         except WorkbenchError as error:
-            self.log.error("Creation of publisher failed: %s", error.one_line())
+            self._refusal("publisher", error)
 
     def _setup_subscriber(self, payload: bytes) -> None:
         try:
             info = self._topic_info(payload)
             old = self.subscribers.get(info.topic_name)
             if old is None:
+                self._check_room(
+                    "subscriber", len(self.subscribers), MAX_SUBSCRIBERS, info.topic_name
+                )
                 self.subscribers[info.topic_name] = DeviceSubscriber(
                     self.node, info, self.send, self.fits
                 )
@@ -421,14 +500,18 @@ class Bridge:
             else:
                 old.id = int(info.topic_id)  # the same subscriber, maybe renumbered
         except WorkbenchError as error:
-            self.log.error("Creation of subscriber failed: %s", error.one_line())
+            self._refusal("subscriber", error)
 
     def _service(self, info: Any, kind: str) -> Any:
         table: dict[str, Any] = self.service_servers if kind == "server" else self.service_clients
         service = table.get(info.topic_name)
         if service is None:
-            maker = DeviceServiceServer if kind == "server" else DeviceServiceClient
-            service = maker(self.node, info, self.send, self.timeout)
+            count = len(self.service_servers) + len(self.service_clients)
+            self._check_room("service", count, MAX_SERVICES, info.topic_name)
+            if kind == "server":
+                service = DeviceServiceServer(self.node, info, self.send, self.timeout)
+            else:
+                service = DeviceServiceClient(self.node, info, self.send, self.timeout, self.calls)
             self.log.info("Setup service %s on %s [%s]", kind, info.topic_name, info.message_type)
             table[info.topic_name] = service
         return service
@@ -451,7 +534,7 @@ class Bridge:
             else:
                 service.id = int(info.topic_id)
         except WorkbenchError as error:
-            self.log.error("Creation of service %s failed: %s", kind, error.one_line())
+            self._refusal(f"service {kind}", error)
 
     def _setup_server_publisher(self, payload: bytes) -> None:
         self._setup_service(payload, "server", device_publishes=True)

@@ -10,11 +10,12 @@ type workbench knows under that name ("Checksum does not match: ours,theirs").
 * :class:`DeviceServiceServer` offers the device's service on the bus: a call sends
   the request to the device and waits for its response;
 * :class:`DeviceServiceClient` calls a bus service for the device and sends back the
-  response.
+  response (on the :class:`CallQueue`'s one thread, never a thread per request).
 """
 
 from __future__ import annotations
 
+import queue
 import threading
 from collections.abc import Callable
 from typing import Any
@@ -168,17 +169,92 @@ class DeviceServiceServer(_DeviceService):
         self.server.shutdown()
 
 
-class DeviceServiceClient(_DeviceService):
-    """A service the device calls: its requests go to the bus service, responses come back."""
+class CallQueue:
+    """The device's service calls, made one after another on one thread of their own.
 
-    def __init__(self, node: Any, info: Any, send: Send, timeout: float) -> None:
+    The thread starts with the first call and ends at :meth:`close`; calls beyond
+    ``limit`` waiting are refused (a device that floods requests cannot pile up work).
+
+    Args:
+        log: The host's logger (refusals are logged on it).
+        limit: Most calls waiting at once.
+    """
+
+    def __init__(self, log: Any, limit: int = 16) -> None:
+        self.log = log
+        self.limit = limit
+        self._calls: queue.Queue[Callable[[], None] | None] = queue.Queue(limit)
+        self._thread: threading.Thread | None = None
+        self._lock = threading.Lock()
+
+    def submit(self, call: Callable[[], None], what: str) -> bool:
+        """Queue ``call``; False (and one log line) when ``limit`` calls already wait."""
+        with self._lock:
+            if self._thread is None:
+                self._thread = threading.Thread(
+                    target=self._run,
+                    args=(self._calls, self.log),
+                    name="rosserial-calls",
+                    daemon=True,
+                )
+                self._thread.start()
+            try:
+                self._calls.put_nowait(call)
+            except queue.Full:
+                self.log.error(
+                    f"Service call {what} for the device dropped: {self.limit} calls are "
+                    "already waiting"
+                )
+                return False
+        return True
+
+    @staticmethod
+    def _run(calls: queue.Queue[Callable[[], None] | None], log: Any) -> None:
+        while True:
+            call = calls.get()
+            if call is None:
+                return
+            try:
+                call()
+            except Exception as error:  # the next call must still be made
+                log.error(f"A service call for the device failed: {type(error).__name__}: {error}")
+
+    def close(self, timeout: float = 2.0) -> None:
+        """End the thread once the call it runs ends (calls still waiting are dropped)."""
+        with self._lock:
+            thread, calls = self._thread, self._calls
+            self._thread = None
+            self._calls = queue.Queue(self.limit)
+        if thread is None:
+            return
+        while True:  # make room for the end marker
+            try:
+                calls.get_nowait()
+            except queue.Empty:
+                break
+        calls.put(None)
+        thread.join(timeout)
+
+
+class DeviceServiceClient(_DeviceService):
+    """A service the device calls: its requests go to the bus service, responses come back.
+
+    Args:
+        calls: Where the calls are made (None: a queue of its own).
+    """
+
+    def __init__(
+        self, node: Any, info: Any, send: Send, timeout: float, calls: CallQueue | None = None
+    ) -> None:
         super().__init__(node, info, send, timeout)
         self.log.info("Starting service client, waiting for service '%s'", self.topic)
         self.client = node.create_client(self.topic, self.service_class)
+        self._own_calls = calls is None
+        self.calls = calls if calls is not None else CallQueue(self.log)
 
     def handle(self, payload: bytes) -> None:
-        """A request frame from the device: call the bus service in the background."""
-        threading.Thread(target=self._call, args=(payload,), daemon=True).start()
+        """A request frame from the device: call the bus service on the call thread."""
+        self.calls.submit(lambda: self._call(payload), self.topic)
 
     def _call(self, payload: bytes) -> None:
         try:
@@ -192,4 +268,6 @@ class DeviceServiceClient(_DeviceService):
             self._send(self.id, serialize(response))
 
     def close(self) -> None:
-        """Nothing to release: a client holds no bus resources."""
+        """End its own call thread (a shared :class:`CallQueue` is its owner's to close)."""
+        if self._own_calls:
+            self.calls.close()

@@ -143,7 +143,7 @@ def open_serial(port: str, baud: int = 57600, reset: bool = True) -> SerialLink:
             handle = serial.serial_for_url(port, baudrate=baud, timeout=READ_WAIT, write_timeout=10)
         else:
             handle = serial.Serial(port, baud, timeout=READ_WAIT, write_timeout=10, exclusive=True)
-    except (serial.SerialException, OSError, ValueError) as error:
+    except (serial.SerialException, OSError, ValueError, OverflowError) as error:
         raise port_error(port, error) from None
     if reset:
         reset_board(handle)

@@ -13,7 +13,11 @@ serial /dev/ttyACM0``) does what ``rosrun rosserial_python serial_node.py
 Arguments as the original's: the port is the first argument or ``_port:=`` (default
 ``/dev/ttyUSB0``), the baud rate ``_baud:=`` (57600). The port ``tcp`` listens for
 Wi-Fi/Ethernet boards on TCP port 11411 (the second argument, ``_tcp_port:=``, or
-``/rosserial_embeddedlinux/tcp_port``). A port that cannot be opened at start is one
+``/rosserial_embeddedlinux/tcp_port``), on 127.0.0.1 only unless ``_bind:=ADDRESS``
+(``workbench serial tcp --bind ADDRESS``) opens it to the network: rosserial_python's
+server listens on every interface, so any machine that reaches it could put a
+"device" on the bus. Each device that disconnects takes everything it set up on the
+bus with it. A port that cannot be opened at start is one
 error line naming it and the fix (the ``dialout`` group); a port that goes away
 later (a USB cable pulled) is reopened once it comes back, and the device's topics
 are requested again. After opening, the node waits 2.1 s for the board's boot loader
@@ -23,6 +27,7 @@ Ctrl-C or SIGTERM sends TX_STOP to the device before the node exits.
 
 from __future__ import annotations
 
+import ipaddress
 import socket
 import threading
 from collections.abc import Sequence
@@ -46,6 +51,8 @@ PTY_WAIT = 0.1
 #: Seconds between attempts to reopen a port that went away.
 RETRY = 1.0
 DEFAULT_TCP_PORT = 11411
+#: Where ``tcp`` mode listens unless told otherwise: this machine only.
+DEFAULT_BIND = "127.0.0.1"
 
 
 def serve_serial(
@@ -113,28 +120,78 @@ def _finish(node: Any, bridge: Bridge, link: Any) -> None:
         link.close()
 
 
-def serve_tcp(node: Any, tcp_port: int, stop: threading.Event) -> None:
-    """Accept boards on TCP ``tcp_port`` (all interfaces) one at a time until ``stop``.
+def resolve(bind: str, tcp_port: int = 0) -> tuple[Any, ...]:
+    """``(family, type, proto, canonname, address)`` to listen on ``bind`` port ``tcp_port``.
 
     Raises:
-        SerialError: The TCP port cannot be listened on.
+        SerialError: ``bind`` is not an address or a known host name.
     """
-    log = node.get_logger()
-    log.info("Fork_server is: %s", False)
-    log.info("Waiting for socket connections on port %d", tcp_port)
-    server = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    try:
+        found = socket.getaddrinfo(bind, tcp_port, type=socket.SOCK_STREAM, flags=socket.AI_PASSIVE)
+    except (socket.gaierror, UnicodeError, ValueError) as error:
+        reason = error.strerror if isinstance(error, OSError) else "not a host name"
+        raise SerialError(
+            f"cannot listen on {bind[:100]!r}: {reason}",
+            hint="give an address of this machine, e.g. --bind 0.0.0.0 for every interface",
+        ) from None
+    return found[0]
+
+
+def listen(bind: str, tcp_port: int) -> socket.socket:
+    """A TCP socket listening on ``bind`` (an address or a host name) port ``tcp_port``.
+
+    Raises:
+        SerialError: The address is unknown or the port cannot be listened on.
+    """
+    family, kind, proto, _name, address = resolve(bind, tcp_port)
+    server = socket.socket(family, kind, proto)
     server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
     try:
-        server.bind(("", tcp_port))
+        server.bind(address)
     except OSError as error:
         server.close()
         raise SerialError(
-            f"cannot listen on TCP port {tcp_port}: {error.strerror}",
+            f"cannot listen on {bind} TCP port {tcp_port}: {error.strerror}",
             hint="is another serial_node in tcp mode running? give another port as the "
             "second argument",
         ) from None
     server.listen(1)
     server.settimeout(0.2)
+    return server
+
+
+def _is_loopback(server: socket.socket) -> bool:
+    try:
+        return ipaddress.ip_address(server.getsockname()[0]).is_loopback
+    except ValueError:
+        return False
+
+
+def serve_tcp(node: Any, tcp_port: int, stop: threading.Event, bind: str = DEFAULT_BIND) -> None:
+    """Accept boards on ``bind`` TCP ``tcp_port`` one at a time until ``stop``.
+
+    Everything a board set up on the bus is removed when it disconnects.
+
+    Raises:
+        SerialError: The address or TCP port cannot be listened on.
+    """
+    log = node.get_logger()
+    log.info("Fork_server is: %s", False)
+    log.info("Waiting for socket connections on port %d", tcp_port)
+    server = listen(bind, tcp_port)
+    if _is_loopback(server):
+        log.info(
+            "Listening on %s only: boards on the network cannot connect (give --bind 0.0.0.0, "
+            "or _bind:=0.0.0.0, to let them)",
+            bind,
+        )
+    else:
+        log.warn(
+            "Listening on %s port %d: any machine that reaches it can connect as a device and "
+            "publish, subscribe and call services on the bus",
+            bind,
+            tcp_port,
+        )
     bridge = Bridge(node)
     link = None
     try:
@@ -144,17 +201,20 @@ def serve_tcp(node: Any, tcp_port: int, stop: threading.Event) -> None:
                 connection, address = server.accept()
             except TimeoutError:
                 continue
-            log.info("Established a socket connection from %s on port %s", *address)
+            log.info("Established a socket connection from %s on port %s", *address[:2])
             link = SocketLink(connection, f"{address[0]}:{address[1]}")
             log.info("calling startSerialClient")
             lost = _bridge(bridge, link, stop, PTY_WAIT)
             if lost is not None:
                 log.info("%s", lost.message)
                 log.info("Client has exited, closing socket.")
+                bridge.forget_device()
+                bridge.close()
                 link = None
                 log.info("Waiting for socket connection")
     finally:
         _finish(node, bridge, link)
+        bridge.forget_device()
         server.close()
         log.info("Shutting down")
         log.info("All done")
@@ -232,42 +292,62 @@ def parse_target(node: Any, args: Sequence[str]) -> tuple[str, int, int]:
     return (
         port,
         _number(baud_text, "baud rate", "_baud:=57600"),
-        _number(tcp_text, "TCP port", "serial_node.py tcp 11411"),
+        _number(tcp_text, "TCP port", "serial_node.py tcp 11411", 65535),
     )
 
 
-def _number(text: Any, what: str, example: str) -> int:
+def _number(text: Any, what: str, example: str, most: int = 2**31 - 1) -> int:
+    shown = str(text)[:40]
     try:
-        value = int(str(text))
+        value = int(str(text)[:100])
     except ValueError:
         raise SerialError(
-            f"the {what} must be a whole number, not {text!r}", hint=example
+            f"the {what} must be a whole number, not {shown!r}", hint=example
         ) from None
     if value <= 0:
-        raise SerialError(f"the {what} must be positive, not {value}", hint=example)
+        raise SerialError(f"the {what} must be positive, not {shown}", hint=example)
+    if value > most:
+        raise SerialError(f"the {what} must be at most {most}, not {shown}", hint=example)
     return value
 
 
-def run(argv: Sequence[str], stop: threading.Event | None = None, baud: int | None = None) -> int:
+def run(
+    argv: Sequence[str],
+    stop: threading.Event | None = None,
+    baud: int | None = None,
+    bind: str | None = None,
+) -> int:
     """Run the host node with ``argv`` (ROS arguments included) until stopped; exit status.
 
     Args:
-        argv: ``[PORT [TCP_PORT]]`` plus ``_port:=``, ``_baud:=``, remappings ...
+        argv: ``[PORT [TCP_PORT]]`` plus ``_port:=``, ``_baud:=``, ``_bind:=``, remappings ...
         stop: Set it to stop (Ctrl-C and SIGTERM stop it too, in the main thread).
         baud: Overrides ``~baud`` (``workbench serial --baud``).
+        bind: Overrides ``~bind``, where ``tcp`` mode listens (``workbench serial --bind``).
+
+    Raises:
+        SerialError: Bad arguments, a port that cannot be opened, ``bind`` without ``tcp``.
     """
     from workbench.bus import Node
     from workbench.bus.names import myargv
 
     stop = stop or threading.Event()
+    if bind is not None:
+        resolve(bind)  # before the node joins the bus (and takes over a running serial_node)
     node = Node("serial_node", argv=list(argv))
     try:
         node.get_logger().info("ROS Serial Python Node")
         port, param_baud, tcp_port = parse_target(node, myargv(list(argv)))
         if node.get_param("~fork_server", False):
             node.get_logger().warn("fork_server is not supported: one board at a time")
+        address = bind if bind is not None else str(node.get_param("~bind", DEFAULT_BIND))
         if port == "tcp":
-            serve_tcp(node, tcp_port, stop)
+            serve_tcp(node, tcp_port, stop, address)
+        elif bind is not None:
+            raise SerialError(
+                "--bind is for tcp mode (a board on the network)",
+                hint=f"workbench serial tcp --bind {bind[:100]}",
+            )
         else:
             serve_serial(node, port, baud or param_baud, stop)
     finally:
