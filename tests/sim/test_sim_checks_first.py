@@ -41,7 +41,7 @@ def _sim_time(bus: Bus) -> float:
     "args, message",
     [
         (["emtpy"], "unknown world 'emtpy'"),
-        (["empty", "--max-step-size", "0"], "--max-step-size must be in (0, 0.1] s"),
+        (["empty", "--max-step-size", "0"], "--max-step-size must be in [0.0001, 0.1] s"),
         (["missing.world"], "missing.world"),
     ],
 )
