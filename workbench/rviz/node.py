@@ -101,6 +101,7 @@ def run(args: argparse.Namespace) -> int:
 
     The ``-d`` config is read (and ``--check`` ends) before the node joins the bus.
     """
+    _check_after(args.after)
     config = read_config(args)
     if getattr(args, "check", False):
         return check(args, config)
@@ -110,7 +111,7 @@ def run(args: argparse.Namespace) -> int:
     print(f"[INFO] rviz: {rviz.url} (fixed frame: {rviz.fixed_frame})", flush=True)
     try:
         # Meshcat is driven from this thread (it must be the one that created it)
-        rviz.spin(max(args.after, 0.0) if args.after is not None else float("inf"))
+        rviz.spin(args.after if args.after is not None else float("inf"))
     finally:
         for name, status in rviz.statuses().items():
             problems = {k: v for k, v in status.items() if k != "Topic" or v != "OK"}
@@ -127,6 +128,22 @@ def run(args: argparse.Namespace) -> int:
             print(f"[INFO] image: {render_png(html, args.png)}", flush=True)
         rviz.close()
     return 0
+
+
+#: Longest ``--after``, s (about 116 days, as the command line's other durations).
+MAX_AFTER_SECONDS = 10_000_000.0
+
+
+def _check_after(after: float | None) -> None:
+    """Refuse an ``--after`` that is not a finite time from 0 to :data:`MAX_AFTER_SECONDS`."""
+    from workbench.errors import ViewerError
+
+    if after is not None and not 0 <= after <= MAX_AFTER_SECONDS:  # NaN fails both
+        raise ViewerError(
+            f"--after must be a number of seconds from 0 to {MAX_AFTER_SECONDS:,.0f}, "
+            f"got {after:g}",
+            hint="without --after, RViz runs until Ctrl-C",
+        )
 
 
 def check(args: argparse.Namespace, config: Any) -> int:

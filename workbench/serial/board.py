@@ -55,11 +55,15 @@ PROFILES = {
 }
 
 
+#: Largest buffer a virtual board takes: a frame's 16-bit payload length and its 8-byte header.
+MAX_BUFFER = 0xFFFF + 8
+
+
 def board_profile(name: str, buffer: int | None = None) -> BoardProfile:
     """The profile of board ``name``, its buffers set to ``buffer`` bytes if given.
 
     Raises:
-        SerialError: Unknown board or a buffer too small for a frame.
+        SerialError: Unknown board, or a buffer too small for a frame or beyond any frame.
     """
     profile = PROFILES.get(name.lower())
     if profile is None:
@@ -69,6 +73,13 @@ def board_profile(name: str, buffer: int | None = None) -> BoardProfile:
     if buffer < 16:
         raise SerialError(
             f"a buffer of {buffer} bytes cannot hold a frame", hint="e.g. --buffer 200"
+        )
+    if buffer > MAX_BUFFER:
+        shown = str(buffer) if len(str(buffer)) <= 20 else f"{str(buffer)[:20]}..."
+        raise SerialError(
+            f"a buffer of {shown} bytes is more than a frame can use ({MAX_BUFFER:,}: "
+            "rosserial's 16-bit length plus its header)",
+            hint="boards have a few hundred bytes, e.g. --buffer 512",
         )
     subs, pubs, _, _ = profile.sizes
     return BoardProfile(profile.name, profile.mcu, (subs, pubs, buffer, buffer))
