@@ -154,6 +154,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     """
     from workbench.cli.signals import Terminated, ignore_stop_signals, stop_on_signals
 
+    if argv is None:
+        _log_warnings_plainly()
     args = list(sys.argv[1:] if argv is None else argv)
     debug = bool(os.environ.get("WORKBENCH_DEBUG"))
     while args and args[0] == "--debug":  # a top-level option, before the command
@@ -183,6 +185,24 @@ def main(argv: Sequence[str] | None = None) -> int:
         # The command caught the interrupt and finalised: report how it was stopped.
         return stop.exit_status
     return status
+
+
+def _log_warnings_plainly() -> None:
+    """Log records of WARNING and up print as their message alone, for the whole process.
+
+    That is how Python prints them before logging is configured; without a handler of our
+    own, the first library to call ``logging.basicConfig`` (Drake does when it first logs)
+    would switch the rest of the run to ``ERROR:name:message``.
+    """
+    import logging
+
+    root = logging.getLogger()
+    if root.handlers:
+        return
+    handler = logging.StreamHandler()
+    handler.setFormatter(logging.Formatter("%(message)s"))
+    handler.setLevel(logging.WARNING)
+    root.addHandler(handler)
 
 
 def _dispatch(args: list[str], debug: bool = False) -> int:
