@@ -2,11 +2,11 @@
 
 The fuzz tests in the suite run a few hundred seeded mutants each, the same every run. A
 campaign reruns them outside the suite with other seeds (``WORKBENCH_FUZZ_SEED``) and as many
-mutants as asked (``WORKBENCH_FUZZ_RUNS``), so that inputs nobody has seen before go through
+mutants as asked (``WORKBENCH_FUZZ_SCALE`` times each test's own count), so that inputs nobody has seen before go through
 the same checks: no traceback, no signal (crash), no hang, no file written or code run outside
 the test's folder, and the simulator still stepping and answering after every request::
 
-    python benchmarks/fuzz_campaign.py [--seeds 1,2,3] [--runs 200] [--tests FILE ...]
+    python benchmarks/fuzz_campaign.py [--seeds 1,2,3] [--scale 1] [--tests FILE ...]
         [--json OUT]
 
 Each (seed, test file) pair runs in its own pytest process; the tests append their counts to
@@ -32,18 +32,20 @@ REPO = Path(__file__).resolve().parents[1]
 #: The fuzz tests of the surfaces a simulator, RViz and rosserial expose.
 DEFAULT_TESTS = (
     "tests/sim/test_fuzz_worlds.py",
+    "tests/sim/test_fuzz_plugin_trust.py",
     "tests/sim/test_fuzz_services.py",
     "tests/rviz/test_fuzz_rviz_configs.py",
     "tests/serial/test_fuzz_streams.py",
+    "tests/serial/test_framing.py",
     "tests/sim/test_fuzz_world_plans.py",
 )
 
 
-def _run(test: str, seed: int, runs: int, report: Path, timeout: float) -> tuple[bool, str]:
-    env = dict(os.environ)
+def _run(test: str, seed: int, scale: float, report: Path, timeout: float) -> tuple[bool, str]:
+    env = {k: v for k, v in os.environ.items() if k != "WORKBENCH_FUZZ_RUNS"}
     env.update(
         WORKBENCH_FUZZ_SEED=str(seed),
-        WORKBENCH_FUZZ_RUNS=str(runs),
+        WORKBENCH_FUZZ_SCALE=str(scale),
         WORKBENCH_FUZZ_REPORT=str(report),
     )
     command = [
@@ -73,7 +75,9 @@ def _run(test: str, seed: int, runs: int, report: Path, timeout: float) -> tuple
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seeds", default="1,2,3", help="comma-separated campaign seeds")
-    parser.add_argument("--runs", type=int, default=200, help="mutants per test function")
+    parser.add_argument(
+        "--scale", type=float, default=1.0, help="mutants per test, as a multiple of the suite's"
+    )
     parser.add_argument("--tests", nargs="*", default=list(DEFAULT_TESTS))
     parser.add_argument("--timeout", type=float, default=3600.0, help="seconds per pytest run")
     parser.add_argument("--json", type=Path, help="write the rows and failures here")
@@ -86,7 +90,7 @@ def main(argv: list[str] | None = None) -> int:
         report.touch()
         for seed in seeds:
             for test in args.tests:
-                ok, why = _run(test, seed, args.runs, report, args.timeout)
+                ok, why = _run(test, seed, args.scale, report, args.timeout)
                 print(f"seed {seed} {test}: {'passed' if ok else 'FAILED'}", flush=True)
                 if not ok:
                     failures.append(why)

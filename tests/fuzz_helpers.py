@@ -12,7 +12,7 @@ workbench, and asserts what issue 17 promises for any input:
 
 A campaign of fresh inputs reruns the same tests outside the suite with other seeds and more
 runs: ``WORKBENCH_FUZZ_SEED`` shifts every seed (:func:`fuzz_seed`), ``WORKBENCH_FUZZ_RUNS``
-sets the number of mutants per test (:func:`fuzz_runs`), and ``WORKBENCH_FUZZ_REPORT`` names a
+sets the number of mutants per test or ``WORKBENCH_FUZZ_SCALE`` multiplies it (:func:`fuzz_runs`), and ``WORKBENCH_FUZZ_REPORT`` names a
 file that :func:`report` appends one JSON line per test to (``benchmarks/fuzz_campaign.py``).
 """
 
@@ -67,8 +67,11 @@ def fuzz_seed(default: int) -> int:
 
 
 def fuzz_runs(default: int) -> int:
-    """The number of mutants a fuzz test makes: ``default``, or ``WORKBENCH_FUZZ_RUNS``."""
-    return int(os.environ.get("WORKBENCH_FUZZ_RUNS", str(default)))
+    """The number of mutants a fuzz test makes: ``default``, ``WORKBENCH_FUZZ_RUNS``, or
+    ``default`` times ``WORKBENCH_FUZZ_SCALE`` (which keeps slow and fast tests in proportion)."""
+    if "WORKBENCH_FUZZ_RUNS" in os.environ:
+        return int(os.environ["WORKBENCH_FUZZ_RUNS"])
+    return max(1, round(default * float(os.environ.get("WORKBENCH_FUZZ_SCALE", "1"))))
 
 
 def report(surface: str, runs: int, **outcomes: int) -> None:
