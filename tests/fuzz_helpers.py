@@ -190,7 +190,8 @@ class WriteWatch:
         return {
             line
             for line in done.stdout.splitlines()
-            if "__pycache__" not in line and ".egg-info" not in line and ".pyc" not in line
+            # caches of Python and of the developer's tools (ruff, mypy) run beside the tests
+            if not any(cache in line for cache in ("__pycache__", ".egg-info", ".pyc", "_cache/"))
         }
 
     def _snapshot(self) -> dict[str, set[str]]:

@@ -130,10 +130,10 @@ def test_a_failing_timer_thread_is_reported_and_restarted(capfd):
         real = clock.sleep_until_ns
         failures = [RuntimeError("clock broke")]
 
-        def flaky(deadline, stop=None):
+        def flaky(deadline, stop=None, back=False):
             if failures:
                 raise failures.pop()
-            real(deadline, stop)
+            real(deadline, stop, back)
 
         clock.sleep_until_ns = flaky
         ticks = threading.Semaphore(0)
@@ -154,7 +154,7 @@ def test_a_timer_thread_that_keeps_failing_stops_loudly(capfd):
     with Bus() as bus:
         node = Node("ticker", bus=bus, disable_rosout=True)
 
-        def broken(deadline, stop=None):
+        def broken(deadline, stop=None, back=False):
             raise RuntimeError("clock gone")
 
         bus.clock.sleep_until_ns = broken
