@@ -619,14 +619,25 @@ def main(argv: Sequence[str] = ()) -> int:
     amcl: Amcl | None = None
     try:
         amcl = Amcl(node)
+        node.on_shutdown(_pose_saver(amcl))
         node.bus.spin()
     finally:
         if amcl is not None:
-            if amcl.localizer is not None:
-                amcl.save_pose()
             amcl.close()
         node.shutdown()
     return 0
+
+
+def _pose_saver(amcl: Amcl) -> Any:
+    """A shutdown hook that saves the last pose to ``~initial_pose_*`` as ROS's amcl does when
+    interrupted; it runs while the node can still reach the parameter server (after
+    ``spin`` returns, a Ctrl-C has already closed the bus)."""
+
+    def save(*_: Any) -> None:
+        if amcl.localizer is not None:
+            amcl.save_pose()
+
+    return save
 
 
 __all__ = ["Amcl", "main"]
