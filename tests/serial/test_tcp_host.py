@@ -143,13 +143,16 @@ def _flood_and_disconnect(bus) -> None:
         # the transport's pool of service threads, at its size)
         _session(bus, port, lines, MAX_SUBSCRIBERS)
         baseline = threading.active_count()
-        names = sorted(t.name for t in threading.enumerate())
+        before = set(threading.enumerate())
         during, refusals = _session(bus, port, lines, 5000)
         assert during <= baseline + MAX_SUBSCRIBERS + 8, (during, baseline)
-        assert wait_for(lambda: threading.active_count() <= baseline, WAIT), (
-            names,
-            sorted(t.name for t in threading.enumerate()),
-        )
+
+        def left_behind() -> list[str]:
+            # by identity, not by count: other tests' threads in this process may end or
+            # start meanwhile; the device's must all have ended
+            return sorted(t.name for t in threading.enumerate() if t not in before)
+
+        assert wait_for(lambda: not left_behind(), WAIT), left_behind()
     assert len(refusals) == REFUSALS_SHOWN, refusals
     device = refusals[0].split(": ", 1)[1].split(" ", 1)[0]
     assert device.startswith("127.0.0.1:")
