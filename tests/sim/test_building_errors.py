@@ -68,6 +68,11 @@ BAD_PLANS = [
         "wall 'w': thickness must be a positive number of metres, got 0",
     ),
     (
+        # the world file writes lengths to the micrometre: 1e-7 m would come out as 0
+        _walls("{name: w, start: [0, 0], end: [3, 0], height: 0.0000001}"),
+        "wall 'w': height must be at least 0.001 m, got 1e-07",
+    ),
+    (
         _walls("{name: w, start: [0, 0], end: [3, 0]}", "{name: w, start: [3, 0], end: [3, 3]}"),
         "a wall and a wall are both named 'w' (rename one)",
     ),

@@ -9,6 +9,7 @@ from collections.abc import Iterator
 import numpy as np
 
 from workbench.model.limits import name_problem, shown_name
+from workbench.sim.building.limits import MIN_PLAN_SIZE
 from workbench.sim.building.plan import EPS, BuildingPlan, Level, Wall
 
 
@@ -270,6 +271,11 @@ def _cross(a: tuple[float, float], b: tuple[float, float]) -> float:
 def _positive(plan: BuildingPlan, what: str, value: float) -> None:
     if not (math.isfinite(value) and value > 0):
         raise plan.error(f"{what} must be a positive number of metres, got {value:g}")
+    if value < MIN_PLAN_SIZE:
+        raise plan.error(
+            f"{what} must be at least {MIN_PLAN_SIZE:g} m, got {value:g}",
+            hint="sizes are in metres: 1 mm is the smallest piece a world holds",
+        )
 
 
 def _finite(plan: BuildingPlan, what: str, value: float) -> None:

@@ -24,3 +24,6 @@ MAX_STEPS = 1_000
 MAX_PLAN_ITEMS = 10_000
 #: Largest magnitude of a length, coordinate, elevation or angle in a plan (m or degrees).
 MAX_PLAN_NUMBER = 100_000.0
+#: Smallest size (thickness, height, width, radius) of a plan's piece, m: the world file
+#: writes lengths to the micrometre, and a smaller one would come out as 0.
+MIN_PLAN_SIZE = 0.001
