@@ -11,6 +11,7 @@ Campaign: ``WORKBENCH_FUZZ_SEED``/``WORKBENCH_FUZZ_RUNS`` (see ``tests/fuzz_help
 
 from __future__ import annotations
 
+import os
 import sys
 import time
 from xml.sax.saxutils import quoteattr
@@ -117,7 +118,9 @@ def test_fuzzed_plugin_filenames_never_run_the_outside_file(layout):
                     outcomes["missing_or_bad"] += 1
             assert not marker.exists(), f"{what} ran the outside file (spawned={spawned})"
     report("plugin filenames", runs, **outcomes)
-    assert outcomes["loaded"] and outcomes["refused"] and outcomes["spawn_refused"]
+    assert outcomes["refused"] and outcomes["spawn_refused"]
+    if "WORKBENCH_FUZZ_SEED" not in os.environ:  # the suite's mutants also reach a good file
+        assert outcomes["loaded"]
 
 
 def test_fuzzed_spawn_requests_get_one_status_line_and_the_server_steps_on(layout):

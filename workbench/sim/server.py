@@ -700,19 +700,27 @@ def _first_sentence(text: str) -> str:
 
 def _failed_model(world: Any, why: str) -> str | None:
     """The model that failed: the first with a NaN or infinite state, else one whose body
-    Drake's message names (None: neither)."""
+    Drake's message names, else the one whose position or speed is the largest (a solver
+    that did not converge names nothing; the model pushed or thrown furthest is the one a
+    request or plugin drove there). None: no model moves."""
     try:
         plant = world.plant
         context = plant.GetMyContextFromRoot(world.context)
         names = [n for n in world.model_names() if n != GROUND_NAME]
-        for name in names:
-            state = plant.GetPositionsAndVelocities(context, world.model_instance(name))
+        states = {
+            name: plant.GetPositionsAndVelocities(context, world.model_instance(name))
+            for name in names
+        }
+        for name, state in states.items():
             if not np.all(np.isfinite(state)):
                 return str(name)
         for name in names:
             for index in plant.GetBodyIndices(world.model_instance(name)):
                 if f"body {plant.get_body(index).name()} " in why + " ":
                     return str(name)
+        largest = {name: float(np.max(np.abs(s))) for name, s in states.items() if s.size}
+        if largest:
+            return str(max(largest, key=lambda name: largest[name]))
     except (RuntimeError, SimulationError):  # a world Drake could not even evaluate
         return None
     return None
