@@ -46,6 +46,7 @@ import reprlib
 from pathlib import Path
 from typing import Any
 
+from workbench.sim.bounds import MAX_STEP_SIZE, MIN_STEP_SIZE
 from workbench.sim.building.limits import (
     MAX_PLAN_ITEMS,
     MAX_PLAN_LEVELS,
@@ -168,9 +169,10 @@ def plan_from_dict(doc: Any, *, source: str | None = None, name: str = "building
         raise reader.error(f"the plan: 'description' must be text, got {description!r}")
     plan.description = " ".join(description.split())
     plan.max_step_size = reader.number(plan_doc, "max_step_size", "the plan", DEFAULT_STEP)
-    if not 0 < plan.max_step_size <= 0.1:
+    if not MIN_STEP_SIZE <= plan.max_step_size <= MAX_STEP_SIZE:  # the simulator's bounds
         raise reader.error(
-            f"the plan: 'max_step_size' must be in (0, 0.1] s, got {plan.max_step_size:g}"
+            f"the plan: 'max_step_size' must be in [{MIN_STEP_SIZE:g}, {MAX_STEP_SIZE:g}] s, "
+            f"got {plan.max_step_size:g}"
         )
     defaults = {
         "thickness": reader.number(plan_doc, "thickness", "the plan", DEFAULT_THICKNESS),
