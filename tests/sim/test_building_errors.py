@@ -77,6 +77,11 @@ BAD_PLANS = [
         "a wall and a wall are both named 'w' (rename one)",
     ),
     ("walls: []", "the plan has no walls"),
+    (
+        # the simulator refuses such a world: the plan is refused first
+        "max_step_size: 1.0e-300\n" + _walls("{name: w, start: [0, 0], end: [3, 0]}"),
+        "the plan: 'max_step_size' must be in [0.0001, 0.1] s, got 1e-300",
+    ),
     ("image: map.pgm\nresolution: 0.05", "this is a map_server map, not a building plan"),
     ("- just a list", "the plan must be a mapping of keys to values, got list"),
     ("walls: [{start: [0, 0", "plan file is not valid YAML"),
