@@ -20,8 +20,9 @@ class RawTerminal:
 
     Args:
         stream: The terminal (standard input by default).
-        raw: Read Ctrl-C as the character ``\x03`` instead of a signal (teleop_twist_keyboard
-            reads in raw mode, only while waiting for a key, so printing stays normal).
+        raw: Read Ctrl-C as the character ``\x03`` instead of a signal, for the whole block
+            (teleop_twist_keyboard reads in raw mode only while waiting for a key, so
+            printing stays normal).
 
     Raises:
         NotATerminalError: ``stream`` is not a terminal (a pipe or a file).
@@ -43,8 +44,15 @@ class RawTerminal:
         import tty
 
         self._saved = termios.tcgetattr(self.fd)
-        # no line buffering, no echo; Ctrl-C still signals; keys typed early are kept
+        # no line buffering, no echo; keys typed early are kept
         tty.setcbreak(self.fd, termios.TCSANOW)
+        if self.raw:
+            # Ctrl-C is a key for the whole block, not only while a read waits: typed while
+            # the node prints or publishes, it would otherwise be a signal (exit 130)
+            # instead of the key that ends the node (exit 0)
+            attributes = termios.tcgetattr(self.fd)
+            attributes[3] &= ~termios.ISIG
+            termios.tcsetattr(self.fd, termios.TCSANOW, attributes)
         return self
 
     def __exit__(self, *exc: object) -> None:
