@@ -34,6 +34,13 @@ MiB = 1024 * 1024
 #: Largest text file read as a whole (YAML, launch files, textfile= parameters), bytes.
 MAX_TEXT_FILE_BYTES = 16 * MiB
 
+#: Longest duration or timeout a command-line option takes, s (about 116 days): ``inf``
+#: would never end and ``1e308`` overflows a clock's deadline.
+MAX_OPTION_SECONDS = 10_000_000.0
+
+#: Largest ``--seed`` an option takes (numpy's and OMPL's seeds are unsigned 32-bit).
+MAX_SEED = 2**32 - 1
+
 
 @dataclass(frozen=True)
 class TreeLimits:

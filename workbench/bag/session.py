@@ -12,6 +12,7 @@ from typing import Any
 from workbench.bag.errors import BagError, warnings_as_lines
 from workbench.bag.writer import default_bag_name
 from workbench.errors import MessageError
+from workbench.limits import MAX_OPTION_SECONDS
 
 
 def _playable(summary: Any, topics: Sequence[str] | None) -> set[str]:
@@ -96,8 +97,8 @@ def record(
         raise BagError("nothing to record", hint="give topic names or -a for all topics")
     if duration is not None and not duration > 0:
         raise BagError(f"--duration must be positive, got {duration:g}")
-    if duration is not None and not duration <= MAX_RECORD_SECONDS:
-        raise BagError(f"--duration must be at most {MAX_RECORD_SECONDS:,.0f} s, got {duration:g}")
+    if duration is not None and not duration <= MAX_OPTION_SECONDS:
+        raise BagError(f"--duration must be at most {MAX_OPTION_SECONDS:,.0f} s, got {duration:g}")
     if limit is not None and limit < 1:
         raise BagError(f"--limit must be at least 1, got {limit}")
     path = output_path(output_name, output_prefix)
@@ -165,8 +166,6 @@ def _drain(node: Any) -> None:
             break
 
 
-#: Longest ``bag record --duration``, s (about 116 days; ``inf`` would never stop).
-MAX_RECORD_SECONDS = 10_000_000.0
 #: Bounds of ``bag play``'s options: a rate of 1e-300 would wait forever between two
 #: messages, a start of 1e308 s overflows a ROS time (at most 2^32 s).
 MIN_RATE, MAX_RATE = 1e-3, 1e6

@@ -123,8 +123,6 @@ OUTPUT_KINDS = {
 }
 #: Longest planning time a request may ask for, s.
 MAX_TIME_LIMIT = 3600.0
-#: Seeds are unsigned 32-bit numbers (OMPL's and numpy's).
-MAX_SEED = 2**32 - 1
 
 
 def check_options(
@@ -152,6 +150,7 @@ def check_options(
             someone else's file, a plot that is not ``.png``, or two outputs name one file.
     """
     from workbench.errors import PlanningError
+    from workbench.limits import MAX_SEED
     from workbench.output_files import check_output
     from workbench.planning.errors import GoalError
     from workbench.planning.goals import parse_goal

@@ -10,10 +10,10 @@ import argparse
 import math
 
 from workbench.errors import PlanningError
+from workbench.limits import MAX_SEED
 
-#: Most collision-matrix samples (--samples) and the largest --seed.
+#: Most collision-matrix samples (--samples).
 MAX_SAMPLES = 1_000_000
-MAX_SEED = 2**32 - 1
 
 CONTROLLERS = ("inverse_dynamics", "pid")
 

@@ -11,9 +11,8 @@ from __future__ import annotations
 import math
 
 from workbench.errors import WorkbenchError
+from workbench.limits import MAX_OPTION_SECONDS
 
-#: Longest duration or timeout an option takes, s (about 116 days).
-MAX_SECONDS = 10_000_000.0
 #: Fastest and slowest rate an option takes, Hz.
 MAX_RATE_HZ = 10_000.0
 MIN_RATE_HZ = 0.001
@@ -36,8 +35,8 @@ def check_seconds(
     low = "of 0 or more" if zero else "above 0"
     if not (math.isfinite(value) and (value >= 0 if zero else value > 0)):
         raise error(f"{option} must be a number of seconds {low}, got {value:g}")
-    if value > MAX_SECONDS:
-        raise error(f"{option} must be at most {MAX_SECONDS:,.0f} s, got {value:g}")
+    if value > MAX_OPTION_SECONDS:
+        raise error(f"{option} must be at most {MAX_OPTION_SECONDS:,.0f} s, got {value:g}")
 
 
 def check_rate(

@@ -130,17 +130,14 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-#: Longest ``--after``, s (about 116 days, as the command line's other durations).
-MAX_AFTER_SECONDS = 10_000_000.0
-
-
 def _check_after(after: float | None) -> None:
-    """Refuse an ``--after`` that is not a finite time from 0 to :data:`MAX_AFTER_SECONDS`."""
+    """Refuse an ``--after`` that is not a finite time from 0 to :data:`MAX_OPTION_SECONDS`."""
     from workbench.errors import ViewerError
+    from workbench.limits import MAX_OPTION_SECONDS
 
-    if after is not None and not 0 <= after <= MAX_AFTER_SECONDS:  # NaN fails both
+    if after is not None and not 0 <= after <= MAX_OPTION_SECONDS:  # NaN fails both
         raise ViewerError(
-            f"--after must be a number of seconds from 0 to {MAX_AFTER_SECONDS:,.0f}, "
+            f"--after must be a number of seconds from 0 to {MAX_OPTION_SECONDS:,.0f}, "
             f"got {after:g}",
             hint="without --after, RViz runs until Ctrl-C",
         )

@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 
 from workbench.errors import SimulationError
+from workbench.limits import MAX_OPTION_SECONDS, MAX_SEED
 
 _LOG = logging.getLogger("workbench.sim")
 
@@ -46,12 +47,8 @@ class ServerOptions:
     allow_spawn_plugins: bool = False
 
 
-#: Latest ``--until`` time, simulated s (about 116 days; ``inf`` would never end).
-MAX_UNTIL_SECONDS = 10_000_000.0
 #: Largest ``--real-time-factor`` (faster than any machine steps a world).
 MAX_REAL_TIME_FACTOR = 1_000_000.0
-#: Largest ``--seed`` (numpy's seeds are 32-bit).
-MAX_SEED = 2**32 - 1
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -123,9 +120,9 @@ def check_options(options: ServerOptions) -> Any:
     from workbench.sim.world_file import load_world
 
     until = options.until
-    if until is not None and not (0 <= until <= MAX_UNTIL_SECONDS):
+    if until is not None and not (0 <= until <= MAX_OPTION_SECONDS):
         raise SimulationError(
-            f"--until must be a simulated time from 0 to {MAX_UNTIL_SECONDS:,.0f} s, got {until:g}"
+            f"--until must be a simulated time from 0 to {MAX_OPTION_SECONDS:,.0f} s, got {until:g}"
         )
     rtf = options.real_time_factor
     if rtf is not None and not (0 < rtf <= MAX_REAL_TIME_FACTOR):
