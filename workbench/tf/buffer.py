@@ -49,6 +49,17 @@ def _wall_ns() -> int:
     return _time.time_ns()
 
 
+def _let_the_listener_in() -> None:
+    """Let other threads run after a failed lookup, once the buffer's lock is released.
+
+    tf's and tf2's tutorials retry a failed lookup at once, in a loop without a sleep. In
+    ROS the buffer is filled by the listener's own spinner thread in C++; here that thread
+    shares the interpreter, and such a loop kept it from the buffer for seconds (turtle2
+    stood still for 7 s in the manual's Experiment 4).
+    """
+    _time.sleep(0)
+
+
 class Buffer(BufferCore):
     """Stores transforms and answers lookups (``tf2_ros.Buffer``).
 
@@ -85,12 +96,20 @@ class Buffer(BufferCore):
             return ok
 
     def lookup(self, target: str, source: str, time: Any = 0) -> StampedTransform:
-        with self._lock:
-            return super().lookup(target, source, time)
+        try:
+            with self._lock:
+                return super().lookup(target, source, time)
+        except _CORE_ERRORS:
+            _let_the_listener_in()
+            raise
 
     def lookup_full(self, *args: Any) -> StampedTransform:
-        with self._lock:
-            return super().lookup_full(*args)
+        try:
+            with self._lock:
+                return super().lookup_full(*args)
+        except _CORE_ERRORS:
+            _let_the_listener_in()
+            raise
 
     def can_lookup(self, target: str, source: str, time: Any = 0) -> tuple[bool, str]:
         with self._lock:
@@ -231,13 +250,12 @@ class Buffer(BufferCore):
         why = ""
         if timeout:
             _, why = self._wait(lambda: self.can_lookup(target_frame, source_frame, time), timeout)
-        with self._lock:
-            try:
-                result = self.lookup(target_frame, source_frame, time)
-            except _CORE_ERRORS as exc:
-                if not timeout:
-                    raise
-                raise self._after_waiting(exc, timeout, why) from None
+        try:  # not under the lock: a failed lookup lets the listener in (see lookup)
+            result = self.lookup(target_frame, source_frame, time)
+        except _CORE_ERRORS as exc:
+            if not timeout:
+                raise
+            raise self._after_waiting(exc, timeout, why) from None
         return to_msg(result)
 
     def _wait_or_raise(self, target: str, source: str, time: Any, timeout: Any) -> None:
@@ -267,15 +285,14 @@ class Buffer(BufferCore):
                 ),
                 timeout,
             )
-        with self._lock:
-            try:
-                result = self.lookup_full(
-                    target_frame, target_time, source_frame, source_time, fixed_frame
-                )
-            except _CORE_ERRORS as exc:
-                if not timeout:
-                    raise
-                raise self._after_waiting(exc, timeout, why) from None
+        try:  # not under the lock: a failed lookup lets the listener in (see lookup)
+            result = self.lookup_full(
+                target_frame, target_time, source_frame, source_time, fixed_frame
+            )
+        except _CORE_ERRORS as exc:
+            if not timeout:
+                raise
+            raise self._after_waiting(exc, timeout, why) from None
         return to_msg(result)
 
     def can_transform(

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import time as _time
 from collections.abc import Sequence
 from typing import Any
 
@@ -26,17 +25,6 @@ def _strip(frame: str) -> str:
 
 def _time_msg(ns: int) -> Any:
     return stamp_msg(ns)
-
-
-def _yield_to_the_listener() -> None:
-    """Let other threads run after a failed lookup.
-
-    The manual's listeners retry a failed lookup at once (``except ...: continue``, no
-    sleep). In ROS the buffer is filled by another process's spinner; here the thread that
-    fills it shares the interpreter, and such a loop kept it from the buffer for seconds
-    (turtle2 stood still for 7 s in Experiment 4).
-    """
-    _time.sleep(0)
 
 
 def current_node() -> Any:
@@ -74,11 +62,7 @@ class Transformer:
     # --- queries -------------------------------------------------------------------
 
     def _lookup(self, target: str, source: str, time: Any) -> StampedTransform:
-        try:
-            return self._buffer.lookup(_strip(target), _strip(source), time)
-        except Exception:
-            _yield_to_the_listener()
-            raise
+        return self._buffer.lookup(_strip(target), _strip(source), time)
 
     def lookupTransform(  # noqa: N802
         self, target_frame: str, source_frame: str, time: Any
@@ -99,17 +83,13 @@ class Transformer:
         fixed_frame: str,
     ) -> tuple[list[float], list[float]]:
         """Time travel: ``source_frame`` at ``source_time`` in ``target_frame`` at ``target_time``."""
-        try:
-            st = self._buffer.lookup_full(
-                _strip(target_frame),
-                target_time,
-                _strip(source_frame),
-                source_time,
-                _strip(fixed_frame),
-            )
-        except Exception:
-            _yield_to_the_listener()
-            raise
+        st = self._buffer.lookup_full(
+            _strip(target_frame),
+            target_time,
+            _strip(source_frame),
+            source_time,
+            _strip(fixed_frame),
+        )
         return list(st.translation), list(st.rotation)
 
     def canTransform(self, target_frame: str, source_frame: str, time: Any) -> bool:  # noqa: N802
