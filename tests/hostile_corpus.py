@@ -79,31 +79,24 @@ def _directory(tmp: Path) -> str:
     return str(path)
 
 
-def _plugin_world(tmp: Path, body: str) -> str:
-    path = tmp / "world" / "hostile.world"
-    path.parent.mkdir()
-    path.write_text(f'<sdf version="1.6"><world name="hostile">{body}</world></sdf>')
-    return str(path)
-
-
 def _plugin_absolute_world(tmp: Path) -> str:
     """A world whose plugin is a file outside its folder, named by absolute path."""
     plugin = HOSTILE / "plugins" / "outside" / "pwned_plugin.py"
-    return _plugin_world(tmp, f'<plugin name="pwned" filename="{plugin}"/>')
+    return _world(tmp, f'<plugin name="pwned" filename="{plugin}"/>')
 
 
 def _include_absolute_world(tmp: Path) -> str:
     """A world including a model file outside its folder by absolute path."""
     model = HOSTILE / "plugins" / "outside" / "pwned_model" / "model.sdf"
-    return _plugin_world(tmp, f"<include><uri>{model}</uri></include>")
+    return _world(tmp, f"<include><uri>{model}</uri></include>")
 
 
 def _plugin_long_name_world(tmp: Path) -> str:
-    return _plugin_world(tmp, f'<plugin name="{"p" * 5000}" filename="model_push.py"/>')
+    return _world(tmp, f'<plugin name="{"p" * 5000}" filename="model_push.py"/>')
 
 
 def _plugin_long_filename_world(tmp: Path) -> str:
-    return _plugin_world(tmp, f'<plugin name="long" filename="{"f" * 5000}.py"/>')
+    return _world(tmp, f'<plugin name="long" filename="{"f" * 5000}.py"/>')
 
 
 def _deep_json_plan(tmp: Path) -> str:
