@@ -224,7 +224,7 @@ class Amcl:
         """Wait until everything received so far has been handled (for tests and scripts)."""
         deadline = time.monotonic() + timeout
         with self._cond:
-            while self._control or len(self._scans) or self._busy:
+            while self.busy:  # the condition's lock is re-entrant
                 remaining = deadline - time.monotonic()
                 if remaining <= 0:
                     return False
