@@ -25,6 +25,7 @@ from typing import Any
 
 from workbench.errors import SerialError
 from workbench.serial.arduino import HIGH, INPUT_PULLUP, LOW, OUTPUT, set_current_board
+from workbench.serial.protocol import FRAME_OVERHEAD, MAX_PAYLOAD
 
 #: Seconds the board waits for serial input between two ``loop()`` calls.
 LOOP_PAUSE = 0.001
@@ -55,8 +56,8 @@ PROFILES = {
 }
 
 
-#: Largest buffer a virtual board takes: a frame's 16-bit payload length and its 8-byte header.
-MAX_BUFFER = 0xFFFF + 8
+#: Largest buffer a virtual board takes: a frame of the largest payload with its overhead.
+MAX_BUFFER = MAX_PAYLOAD + FRAME_OVERHEAD
 
 
 def board_profile(name: str, buffer: int | None = None) -> BoardProfile:
